@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "apparentHeatCapacityModel.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(apparentHeatCapacityModel, 0);
+    defineRunTimeSelectionTable(apparentHeatCapacityModel, dictionary);
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::apparentHeatCapacityModel::apparentHeatCapacityModel
+(
+    const dictionary& dict,
+    const phaseProperties& liquid,
+    const phaseProperties& vapour
+)
+:
+    liquid_(liquid),
+    vapour_(vapour),
+    Tv_
+    (
+        checkedRead::get
+        (
+            dict, "Tv", dimTemperature, checkedRead::positive()
+        ).value()
+    ),
+    dT_
+    (
+        checkedRead::get
+        (
+            dict, "dT", dimTemperature, checkedRead::positive()
+        ).value()
+    ),
+    L_
+    (
+        checkedRead::get
+        (
+            dict, "latentHeat", dimEnergy/dimMass, checkedRead::nonNegative()
+        ).value()
+    ),
+    irreversible_(dict.getOrDefault<bool>("irreversible", true))
+{}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::apparentHeatCapacityModel::x(const scalar T) const
+{
+    return (T - Tv_)/(sqrt(2.0)*dT_);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::sigmaIntegral
+(
+    const scalar T
+) const
+{
+    // S = sqrt(2) dT/2 [x + x erf(x) + exp(-x^2)/sqrt(pi)]
+    const scalar xi = x(T);
+    return
+        0.5*sqrt(2.0)*dT_
+       *(xi + xi*::erf(xi) + ::exp(-sqr(xi))/sqrt(constant::mathematical::pi));
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::sigmaSqrIntegral
+(
+    const scalar T
+) const
+{
+    // sigma^2 = (1 + 2 erf + erf^2)/4, with the antiderivatives
+    //   int erf   = x erf + exp(-x^2)/sqrt(pi)
+    //   int erf^2 = x erf^2 + 2/sqrt(pi) erf exp(-x^2) - sqrt(2/pi) erf(sqrt2 x)
+    const scalar xi = x(T);
+    const scalar e = ::erf(xi);
+    const scalar g = ::exp(-sqr(xi));
+    const scalar sqrtPi = sqrt(constant::mathematical::pi);
+
+    const scalar intErf = xi*e + g/sqrtPi;
+    const scalar intErfSqr =
+        xi*sqr(e) + 2.0/sqrtPi*e*g
+      - sqrt(2.0/constant::mathematical::pi)*::erf(sqrt(2.0)*xi);
+
+    return 0.25*sqrt(2.0)*dT_*(xi + 2.0*intErf + intErfSqr);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::apparentHeatCapacityModel::sigma(const scalar T) const
+{
+    return 0.5*(1.0 + ::erf(x(T)));
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::dSigmaDT(const scalar T) const
+{
+    return
+        ::exp(-sqr(x(T)))
+       /(sqrt(2.0*constant::mathematical::pi)*dT_);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::evaporatedFraction
+(
+    const scalar T,
+    const scalar TMax
+) const
+{
+    return sigma(irreversible_ ? max(T, TMax) : T);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::enthalpy
+(
+    const scalar T,
+    const scalar TMax
+) const
+{
+    if (!irreversible_ || T >= TMax)
+    {
+        return heatingEnthalpy(T);
+    }
+
+    return heatingEnthalpy(TMax) - sensibleCapacity(sigma(TMax))*(TMax - T);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModel::capacity
+(
+    const scalar T,
+    const scalar TMax
+) const
+{
+    if (!irreversible_ || T >= TMax)
+    {
+        return sensibleCapacity(sigma(T)) + latentCapacity(T);
+    }
+
+    return sensibleCapacity(sigma(TMax));
+}
+
+// ************************************************************************* //

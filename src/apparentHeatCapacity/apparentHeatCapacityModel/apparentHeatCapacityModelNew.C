@@ -1,0 +1,38 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "apparentHeatCapacityModel.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::apparentHeatCapacityModel>
+Foam::apparentHeatCapacityModel::New
+(
+    const dictionary& dict,
+    const phaseProperties& liquid,
+    const phaseProperties& vapour
+)
+{
+    const word modelType(dict.getOrDefault<word>("type", "energyConsistent"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "type",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<apparentHeatCapacityModel>
+    (
+        cstrIter()(dict, liquid, vapour)
+    );
+}
+
+// ************************************************************************* //

@@ -1,0 +1,78 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "energyConsistent.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace apparentHeatCapacityModels
+{
+    defineTypeNameAndDebug(energyConsistent, 0);
+    addToRunTimeSelectionTable
+    (
+        apparentHeatCapacityModel,
+        energyConsistent,
+        dictionary
+    );
+}
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::apparentHeatCapacityModels::energyConsistent::energyConsistent
+(
+    const dictionary& dict,
+    const phaseProperties& liquid,
+    const phaseProperties& vapour
+)
+:
+    apparentHeatCapacityModel(dict, liquid, vapour)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::apparentHeatCapacityModels::energyConsistent::heatingEnthalpy
+(
+    const scalar T
+) const
+{
+    const scalar sigmaInt = sigmaIntegral(T);
+    return
+        liquid_.rhoCp()*T
+      + (vapour_.rhoCp() - liquid_.rhoCp())*sigmaInt
+      + liquid_.rho()*L_*sigma(T);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModels::energyConsistent::sensibleCapacity
+(
+    const scalar sigma
+) const
+{
+    return liquid_.rhoCp()*(1.0 - sigma) + vapour_.rhoCp()*sigma;
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModels::energyConsistent::latentCapacity
+(
+    const scalar T
+) const
+{
+    return liquid_.rho()*L_*dSigmaDT(T);
+}
+
+
+Foam::scalar Foam::apparentHeatCapacityModels::energyConsistent::latentEnthalpy
+(
+    const scalar sigma
+) const
+{
+    return liquid_.rho()*L_*sigma;
+}
+
+// ************************************************************************* //

@@ -1,0 +1,368 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "porousMedium.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(porousMedium, 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::volScalarField Foam::porousMedium::propertyField
+(
+    const word& name,
+    const dimensionedScalar& uniformValue
+) const
+{
+    IOobject io
+    (
+        name,
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+
+    if (io.typeHeaderOk<volScalarField>(true))
+    {
+        Info<< "    " << name << ": cell field from " << io.objectPath()
+            << endl;
+        volScalarField fld(io, mesh_);
+        fld.dimensions().reset(uniformValue.dimensions());
+        return fld;
+    }
+
+    io.readOpt() = IOobject::NO_READ;
+    return volScalarField(io, mesh_, uniformValue);
+}
+
+
+Foam::scalar Foam::porousMedium::kappaCell
+(
+    const label celli,
+    const scalar T,
+    const scalar TMax
+) const
+{
+    const scalar phi = porosity_[celli];
+    const scalar thetaL =
+        waterContent_[celli]
+       *(1.0 - phaseChange_->evaporatedFraction(T, TMax));
+
+    const scalar kappaFluid =
+        phi > SMALL
+      ? (thetaL*liquid_.kappa() + (phi - thetaL)*vapour_.kappa())/phi
+      : vapour_.kappa();
+
+    return conductivityModel_->kappa(kappaSolid_[celli], kappaFluid, phi);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::porousMedium::porousMedium(const fvMesh& mesh)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "porousProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    solid_(*this, "solid"),
+    liquid_(*this, "liquid"),
+    vapour_(*this, "vapour"),
+    porosity_
+    (
+        propertyField
+        (
+            "porosity",
+            checkedRead::get
+            (
+                *this, "porosity", dimless, checkedRead::closedOpen(0, 1)
+            )
+        )
+    ),
+    waterContent_
+    (
+        propertyField("waterContent", dimensionedScalar(dimless, Zero))
+    ),
+    rhoCpSolid_
+    (
+        propertyField
+        (
+            "rhoCpSolid",
+            dimensionedScalar
+            (
+                "rhoCpSolid",
+                dimEnergy/dimVolume/dimTemperature,
+                solid_.rhoCp()
+            )
+        )
+    ),
+    kappaSolid_
+    (
+        propertyField
+        (
+            "kappaSolid",
+            dimensionedScalar
+            (
+                "kappaSolid",
+                dimPower/dimLength/dimTemperature,
+                solid_.kappa()
+            )
+        )
+    ),
+    conductivityModel_(effectiveConductivityModel::New(*this)),
+    phaseChange_(nullptr)
+{
+    const auto range01 = checkedRead::closedOpen(0, 1);
+    const auto positive = checkedRead::positive();
+
+    // Cell fields overriding uniform values
+    checkedRead::check
+    (
+        porosity_.objectPath(), "porosity", porosity_, range01
+    );
+    checkedRead::check
+    (
+        rhoCpSolid_.objectPath(), "rhoCpSolid", rhoCpSolid_, positive
+    );
+    checkedRead::check
+    (
+        kappaSolid_.objectPath(), "kappaSolid", kappaSolid_, positive
+    );
+
+    // Initial water: a cell field, a saturation or a volumetric content
+    if (!waterContent_.headerOk())
+    {
+        if (found("saturation"))
+        {
+            const scalar S =
+                checkedRead::get
+                (
+                    *this, "saturation", dimless, checkedRead::closed(0, 1)
+                ).value();
+            waterContent_.primitiveFieldRef() = S*porosity_.primitiveField();
+        }
+        else
+        {
+            const scalar theta0 =
+                checkedRead::get
+                (
+                    *this, "waterContent", dimless, checkedRead::closed(0, 1)
+                ).value();
+
+            const scalar phiMin = gMin(porosity_.primitiveField());
+            if (theta0 > phiMin)
+            {
+                FatalIOErrorInFunction(*this)
+                    << "Keyword 'waterContent' = " << theta0
+                    << " is outside its valid range [0, porosity = "
+                    << phiMin << "]: the volumetric water content cannot"
+                    << " exceed the porosity" << nl
+                    << exit(FatalIOError);
+            }
+            waterContent_.primitiveFieldRef() = theta0;
+        }
+        waterContent_.correctBoundaryConditions();
+    }
+
+    forAll(waterContent_, celli)
+    {
+        if
+        (
+            waterContent_[celli] < 0
+         || waterContent_[celli] > porosity_[celli] + SMALL
+        )
+        {
+            dictionary fieldDict;
+            fieldDict.name() = waterContent_.objectPath();
+            FatalIOErrorInFunction(fieldDict)
+                << "Field 'waterContent' = " << waterContent_[celli]
+                << " in cell " << celli << " is outside its valid range"
+                << " [0, porosity = " << porosity_[celli] << "]" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    if (!isDict("phaseChange"))
+    {
+        FatalIOErrorInFunction(*this)
+            << "Missing sub-dictionary 'phaseChange' in " << name()
+            << ": expected { type energyConsistent|thesisCompatible;"
+            << " Tv; dT; latentHeat; }" << nl
+            << exit(FatalIOError);
+    }
+    phaseChange_ =
+        apparentHeatCapacityModel::New(subDict("phaseChange"), liquid_, vapour_);
+
+    Info<< "Porous medium: porosity " << gMin(porosity_.primitiveField())
+        << " to " << gMax(porosity_.primitiveField())
+        << ", water content " << gMin(waterContent_.primitiveField())
+        << " to " << gMax(waterContent_.primitiveField()) << nl
+        << "    conductivity model " << get<word>("conductivityModel")
+        << ", phase change " << phaseChange_->type()
+        << " (Tv = " << phaseChange_->Tv() << " K, dT = "
+        << phaseChange_->dT() << " K, L = " << phaseChange_->latentHeat()
+        << " J/kg, irreversible " << phaseChange_->irreversible() << ")"
+        << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField> Foam::porousMedium::enthalpy
+(
+    const scalarField& T,
+    const scalarField& TMax
+) const
+{
+    auto tH = tmp<scalarField>::New(T.size());
+    scalarField& H = tH.ref();
+    const scalar rhoCpGas = vapour_.rhoCp();
+
+    forAll(H, celli)
+    {
+        const scalar phi = porosity_[celli];
+        const scalar theta0 = waterContent_[celli];
+
+        H[celli] =
+            ((1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*rhoCpGas)
+           *T[celli]
+          + theta0*phaseChange_->enthalpy(T[celli], TMax[celli]);
+    }
+    return tH;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::porousMedium::capacity
+(
+    const scalarField& T,
+    const scalarField& TMax
+) const
+{
+    auto tC = tmp<scalarField>::New(T.size());
+    scalarField& C = tC.ref();
+    const scalar rhoCpGas = vapour_.rhoCp();
+
+    forAll(C, celli)
+    {
+        const scalar phi = porosity_[celli];
+        const scalar theta0 = waterContent_[celli];
+
+        C[celli] =
+            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*rhoCpGas
+          + theta0*phaseChange_->capacity(T[celli], TMax[celli]);
+    }
+    return tC;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::porousMedium::latentEnthalpy
+(
+    const scalarField& T,
+    const scalarField& TMax
+) const
+{
+    auto tHl = tmp<scalarField>::New(T.size());
+    scalarField& Hl = tHl.ref();
+
+    forAll(Hl, celli)
+    {
+        Hl[celli] =
+            waterContent_[celli]
+           *phaseChange_->latentEnthalpy
+            (
+                phaseChange_->evaporatedFraction(T[celli], TMax[celli])
+            );
+    }
+    return tHl;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::porousMedium::liquidWater
+(
+    const scalarField& T,
+    const scalarField& TMax
+) const
+{
+    auto tTheta = tmp<scalarField>::New(T.size());
+    scalarField& theta = tTheta.ref();
+
+    forAll(theta, celli)
+    {
+        theta[celli] =
+            waterContent_[celli]
+           *(1.0 - phaseChange_->evaporatedFraction(T[celli], TMax[celli]));
+    }
+    return tTheta;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::porousMedium::kappa
+(
+    const volScalarField& T,
+    const volScalarField& TMax
+) const
+{
+    auto tkappa = tmp<volScalarField>::New
+    (
+        IOobject
+        (
+            "kappa",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar(dimPower/dimLength/dimTemperature, Zero)
+    );
+    volScalarField& kappa = tkappa.ref();
+
+    forAll(kappa, celli)
+    {
+        kappa[celli] = kappaCell(celli, T[celli], TMax[celli]);
+    }
+
+    // Coupled patches (processor, cyclic) take the neighbour cell values
+    kappa.correctBoundaryConditions();
+
+    // Other patches: the adjacent cell's material at the boundary temperature
+    volScalarField::Boundary& kappaBf = kappa.boundaryFieldRef();
+    forAll(kappaBf, patchi)
+    {
+        fvPatchScalarField& kappap = kappaBf[patchi];
+        if (kappap.coupled())
+        {
+            continue;
+        }
+
+        const labelUList& faceCells = kappap.patch().faceCells();
+        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
+
+        forAll(kappap, facei)
+        {
+            const label celli = faceCells[facei];
+            kappap[facei] =
+                kappaCell(celli, Tp[facei], max(Tp[facei], TMax[celli]));
+        }
+    }
+
+    return tkappa;
+}
+
+// ************************************************************************* //
