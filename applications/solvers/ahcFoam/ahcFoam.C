@@ -1,0 +1,89 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    ahcFoam
+
+Description
+    Transient conduction in a wet porous soil with evaporation of its water
+    by the apparent heat capacity (AHC) method (Muhieddine 2009 §3.1,
+    Mansour 2015 §4.1), in conservative enthalpy form:
+
+        dH(T; TMax)/dt = div(k_e(T; TMax) grad T)
+
+    H and k_e come from porousMedium (constant/porousProperties). Each step
+    is implicit (backward Euler) and solved by modified-Picard iterations
+
+        C^k (T^{k+1} - T^k)/dt + (H^k - H^n)/dt = div(k_e^k grad T^{k+1})
+
+    until the normalised residual and the temperature change fall below
+    their tolerances; at convergence H(T^{n+1}) - H^n is exactly the heat
+    that entered, so the energy balance closes to the solver tolerance.
+    A step that does not converge is cut in half and retried. The time step
+    adapts to the largest temperature change per step and the iteration
+    count. TMax, the maximum temperature reached in each cell, is written
+    with T and the liquid water content.
+
+    Controls:
+        system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
+                             minDeltaT, maxDeltaTGrowth
+        system/fvSolution:   nonlinear { maxIter; residualTol; TTol; }
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "porousMedium.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Conduction in a wet porous soil with evaporation of its water"
+        " (apparent heat capacity method)"
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+    #include "createEnergyBalance.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readControls.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "solveStep.H"
+
+        if (runTime.writeTime())
+        {
+            liquidWater.primitiveFieldRef() =
+                medium.liquidWater(T.primitiveField(), TMax.primitiveField());
+            liquidWater.correctBoundaryConditions();
+        }
+
+        runTime.write();
+
+        if (runTime.writeTime())
+        {
+            #include "reportEnergyBalance.H"
+        }
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

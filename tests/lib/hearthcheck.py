@@ -1,0 +1,140 @@
+"""Helpers shared by the hearthFoam tests: reading OpenFOAM output and the
+exact solutions the tests compare against (standard library only)."""
+import math
+import os
+import re
+import sys
+
+
+# --------------------------------------------------------------------------
+# Reading results
+
+def read_probes(path):
+    """OpenFOAM probes file -> (locations, times, columns[probe][time])."""
+    locations, times, cols = [], [], None
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#'):
+                m = re.match(r'#\s*Probe\s+\d+\s+\(([^)]*)\)', line)
+                if m:
+                    locations.append(tuple(float(v) for v in m.group(1).split()))
+                continue
+            vals = line.split()
+            if not vals:
+                continue
+            times.append(float(vals[0]))
+            if cols is None:
+                cols = [[] for _ in vals[1:]]
+            for i, v in enumerate(vals[1:]):
+                cols[i].append(float(v))
+    return locations, times, cols or []
+
+
+def read_energy_balances(log):
+    """Every 'imbalance ... (relative r)' of an ahcFoam log -> list of
+    (stored change, imbalance, relative)."""
+    out = []
+    stored = None
+    with open(log) as f:
+        for line in f:
+            m = re.search(r'stored change\s+=\s+(\S+)', line)
+            if m:
+                stored = float(m.group(1))
+            m = re.search(r'imbalance\s+=\s+(\S+) \(relative (\S+)\)', line)
+            if m:
+                out.append((stored, float(m.group(1)), float(m.group(2))))
+    return out
+
+
+def read_internal_field(path):
+    """Values of an ascii volScalarField's internalField (uniform or list)."""
+    with open(path) as f:
+        txt = f.read()
+    m = re.search(r'internalField\s+uniform\s+(\S+);', txt)
+    if m:
+        return [float(m.group(1))]
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(', txt)
+    n = int(m.group(1))
+    body = txt[m.end():]
+    return [float(v) for v in body.split(')')[0].split()[:n]]
+
+
+# --------------------------------------------------------------------------
+# Exact solutions
+
+def erfc_solution(z, t, T0, Tw, alpha):
+    """Semi-infinite solid at T0, surface held at Tw from t = 0."""
+    if t <= 0:
+        return T0
+    return T0 + (Tw - T0)*math.erfc(z/(2.0*math.sqrt(alpha*t)))
+
+
+class NeumannStefan:
+    """Two-phase Neumann solution: semi-infinite solid at T0 < Tf, wall held
+    at Tw > Tf, melting front xi = 2 lam sqrt(alpha_l t). The transcendental
+    equation is the corrected form (Muhieddine digest §3.2):
+      exp(-lam^2)/erf(lam)
+      - ks/kl nu (Tf - T0)/(Tw - Tf) exp(-nu^2 lam^2)/erfc(nu lam)
+      = sqrt(pi) lam L/(Cl (Tw - Tf)),  nu = sqrt(alpha_l/alpha_s)."""
+
+    def __init__(self, L, T0, Tw, Tf, kl, ks, Cl, Cs, rho):
+        self.T0, self.Tw, self.Tf = T0, Tw, Tf
+        self.al = kl/(rho*Cl)
+        self.as_ = ks/(rho*Cs)
+        self.nu = math.sqrt(self.al/self.as_)
+        nu = self.nu
+
+        def f(lam):
+            return (math.exp(-lam*lam)/math.erf(lam)
+                    - ks/kl*nu*(Tf - T0)/(Tw - Tf)
+                    * math.exp(-nu*nu*lam*lam)/math.erfc(nu*lam)
+                    - math.sqrt(math.pi)*lam*L/(Cl*(Tw - Tf)))
+        a, b = 1e-6, 5.0
+        for _ in range(200):
+            c = 0.5*(a + b)
+            if f(a)*f(c) <= 0:
+                b = c
+            else:
+                a = c
+        self.lam = 0.5*(a + b)
+
+    def front(self, t):
+        return 2.0*self.lam*math.sqrt(self.al*t)
+
+    def T(self, x, t):
+        if t <= 0:
+            return self.T0
+        xs = x/(2.0*math.sqrt(self.al*t))
+        if xs < self.lam:
+            return self.Tw + (self.Tf - self.Tw)*math.erf(xs)/math.erf(self.lam)
+        return self.T0 + (self.Tf - self.T0)*math.erfc(self.nu*xs) \
+            / math.erfc(self.nu*self.lam)
+
+    def time_front_at(self, x):
+        return (x/(2.0*self.lam))**2/self.al
+
+
+# --------------------------------------------------------------------------
+# Reporting
+
+class Check:
+    """Collects named comparisons; exit status 1 if any failed."""
+
+    def __init__(self, name):
+        self.name = name
+        self.failed = 0
+
+    def le(self, what, value, tol):
+        ok = value <= tol
+        self.failed += not ok
+        print('  %s %-60s %.4g <= %.4g' % ('ok  ' if ok else 'FAIL', what, value, tol))
+        return ok
+
+    def true(self, what, cond, detail=''):
+        self.failed += not cond
+        print('  %s %-60s %s' % ('ok  ' if cond else 'FAIL', what, detail))
+        return cond
+
+    def done(self):
+        print('%s: %s' % (self.name, 'PASS' if not self.failed else 'FAIL'))
+        sys.exit(1 if self.failed else 0)
