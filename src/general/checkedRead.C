@@ -4,6 +4,7 @@
 
 #include "checkedRead.H"
 #include "OStringStream.H"
+#include "token.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -104,7 +105,33 @@ Foam::dimensionedScalar Foam::checkedRead::get
             << exit(FatalIOError);
     }
 
-    dimensionedScalar value(keyword, dims, dict);
+    // Dimensions are optional in the file. Read them unchecked, so that a
+    // mismatch ends in a FatalIOError naming the keyword and the valid
+    // range rather than in the abort of dimensioned<Type>::initialize
+    bool hasDims = false;
+    for (const token& tok : dict.lookup(keyword))
+    {
+        if (tok == token::BEGIN_SQR)
+        {
+            hasDims = true;
+            break;
+        }
+    }
+
+    dimensionedScalar value(keyword, dict);
+
+    if (hasDims && value.dimensions() != dims)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' has dimensions "
+            << value.dimensions() << " in dictionary " << dict.name()
+            << ": expected dimensions " << dims
+            << " (or none) and a value in the range "
+            << range.str().c_str() << nl
+            << exit(FatalIOError);
+    }
+    value.dimensions().reset(dims);
+
     check(dict, keyword, value.value(), range);
     return value;
 }

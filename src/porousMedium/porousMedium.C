@@ -43,6 +43,31 @@ Foam::volScalarField Foam::porousMedium::propertyField
 }
 
 
+inline void Foam::porousMedium::cellEnthalpy
+(
+    const label celli,
+    const scalar T,
+    const scalar TMax,
+    scalar& H,
+    scalar& C
+) const
+{
+    const scalar phi = porosity_[celli];
+    const scalar theta0 = waterContent_[celli];
+    const scalar rhoCpDry =
+        (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*vapour_.rhoCp();
+
+    H = rhoCpDry*T;
+    C = rhoCpDry;
+
+    if (theta0 > 0)
+    {
+        H += theta0*phaseChange_->enthalpy(T, TMax);
+        C += theta0*phaseChange_->capacity(T, TMax);
+    }
+}
+
+
 Foam::scalar Foam::porousMedium::kappaCell
 (
     const label celli,
@@ -147,6 +172,23 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
     // Initial water: a cell field, a saturation or a volumetric content
     if (!waterContent_.headerOk())
     {
+        if (found("saturation") == found("waterContent"))
+        {
+            FatalIOErrorInFunction(*this)
+                << (
+                       found("saturation")
+                     ? "Both keywords 'waterContent' and 'saturation' given"
+                     : "Missing keyword 'waterContent' (or 'saturation')"
+                   )
+                << " in dictionary "
+                << name() << ": expected exactly one of waterContent"
+                << " (volumetric, in the range [0, porosity = "
+                << gMin(porosity_.primitiveField()) << "]) or saturation"
+                << " (in the range [0, 1]), or the cell field "
+                << waterContent_.objectPath() << nl
+                << exit(FatalIOError);
+        }
+
         if (found("saturation"))
         {
             const scalar S =
@@ -231,17 +273,11 @@ Foam::tmp<Foam::scalarField> Foam::porousMedium::enthalpy
 {
     auto tH = tmp<scalarField>::New(T.size());
     scalarField& H = tH.ref();
-    const scalar rhoCpGas = vapour_.rhoCp();
+    scalar C;
 
     forAll(H, celli)
     {
-        const scalar phi = porosity_[celli];
-        const scalar theta0 = waterContent_[celli];
-
-        H[celli] =
-            ((1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*rhoCpGas)
-           *T[celli]
-          + theta0*phaseChange_->enthalpy(T[celli], TMax[celli]);
+        cellEnthalpy(celli, T[celli], TMax[celli], H[celli], C);
     }
     return tH;
 }
@@ -255,18 +291,93 @@ Foam::tmp<Foam::scalarField> Foam::porousMedium::capacity
 {
     auto tC = tmp<scalarField>::New(T.size());
     scalarField& C = tC.ref();
-    const scalar rhoCpGas = vapour_.rhoCp();
+    scalar H;
 
     forAll(C, celli)
     {
-        const scalar phi = porosity_[celli];
-        const scalar theta0 = waterContent_[celli];
-
-        C[celli] =
-            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*rhoCpGas
-          + theta0*phaseChange_->capacity(T[celli], TMax[celli]);
+        cellEnthalpy(celli, T[celli], TMax[celli], H, C[celli]);
     }
     return tC;
+}
+
+
+void Foam::porousMedium::enthalpyAndCapacity
+(
+    const scalarField& T,
+    const scalarField& TMax,
+    scalarField& H,
+    scalarField& C
+) const
+{
+    forAll(T, celli)
+    {
+        cellEnthalpy(celli, T[celli], TMax[celli], H[celli], C[celli]);
+    }
+}
+
+
+Foam::label Foam::porousMedium::temperature
+(
+    const scalarField& H,
+    const scalarField& TMax,
+    scalarField& T,
+    scalarField& C
+) const
+{
+    const scalar waterMinCapacity = phaseChange_->minimumCapacity();
+    const label maxSteps = 100;
+    label maxUsed = 0;
+
+    forAll(T, celli)
+    {
+        const scalar phi = porosity_[celli];
+        const scalar theta0 = waterContent_[celli];
+        const scalar minCapacity =
+            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*vapour_.rhoCp()
+          + theta0*waterMinCapacity;
+
+        scalar Ti = T[celli];
+        scalar Hi, Ci;
+        cellEnthalpy(celli, Ti, TMax[celli], Hi, Ci);
+
+        // |T - root| <= |H(T) - H|/minCapacity brackets the root
+        const scalar width = mag(Hi - H[celli])/minCapacity;
+        scalar lower = Ti - width;
+        scalar upper = Ti + width;
+        const scalar tolerance = 1e-12*max(mag(H[celli]), minCapacity);
+
+        label step = 0;
+        while (mag(Hi - H[celli]) > tolerance && step < maxSteps)
+        {
+            ++step;
+            if (Hi > H[celli])
+            {
+                upper = Ti;
+            }
+            else
+            {
+                lower = Ti;
+            }
+
+            scalar Tnew = Ti - (Hi - H[celli])/Ci;
+            if (Tnew <= lower || Tnew >= upper)
+            {
+                Tnew = 0.5*(lower + upper);
+            }
+            if (upper - lower < 1e-12*mag(Ti))
+            {
+                break;
+            }
+            Ti = Tnew;
+            cellEnthalpy(celli, Ti, TMax[celli], Hi, Ci);
+        }
+
+        T[celli] = Ti;
+        C[celli] = Ci;
+        maxUsed = max(maxUsed, step);
+    }
+
+    return maxUsed;
 }
 
 
@@ -331,8 +442,19 @@ Foam::tmp<Foam::volScalarField> Foam::porousMedium::kappa
         mesh_,
         dimensionedScalar(dimPower/dimLength/dimTemperature, Zero)
     );
-    volScalarField& kappa = tkappa.ref();
+    correctKappa(tkappa.ref(), T, TMax);
 
+    return tkappa;
+}
+
+
+void Foam::porousMedium::correctKappa
+(
+    volScalarField& kappa,
+    const volScalarField& T,
+    const volScalarField& TMax
+) const
+{
     forAll(kappa, celli)
     {
         kappa[celli] = kappaCell(celli, T[celli], TMax[celli]);
@@ -361,8 +483,6 @@ Foam::tmp<Foam::volScalarField> Foam::porousMedium::kappa
                 kappaCell(celli, Tp[facei], max(Tp[facei], TMax[celli]));
         }
     }
-
-    return tkappa;
 }
 
 // ************************************************************************* //

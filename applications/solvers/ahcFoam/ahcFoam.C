@@ -33,6 +33,7 @@ Description
 
 #include "fvCFD.H"
 #include "porousMedium.H"
+#include "andersonAcceleration.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -13,6 +13,33 @@ namespace Foam
     defineRunTimeSelectionTable(apparentHeatCapacityModel, dictionary);
 }
 
+
+namespace
+{
+    // erf(x) and exp(-x^2). Beyond |x| = 6 they are -1/+1 and 0 to double
+    // precision (erfc(6) = 2e-17, exp(-36) = 2e-16): most cells are far
+    // from the evaporation band, where exp(-x^2) would take the slow
+    // underflow path of libm.
+    inline void erfAndGauss(const double x, double& e, double& g)
+    {
+        if (x < -6)
+        {
+            e = -1;
+            g = 0;
+        }
+        else if (x > 6)
+        {
+            e = 1;
+            g = 0;
+        }
+        else
+        {
+            e = ::erf(x);
+            g = ::exp(-x*x);
+        }
+    }
+}
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::apparentHeatCapacityModel::apparentHeatCapacityModel
@@ -64,9 +91,11 @@ Foam::scalar Foam::apparentHeatCapacityModel::sigmaIntegral
 {
     // S = sqrt(2) dT/2 [x + x erf(x) + exp(-x^2)/sqrt(pi)]
     const scalar xi = x(T);
+    scalar e, g;
+    erfAndGauss(xi, e, g);
     return
         0.5*sqrt(2.0)*dT_
-       *(xi + xi*::erf(xi) + ::exp(-sqr(xi))/sqrt(constant::mathematical::pi));
+       *(xi + xi*e + g/sqrt(constant::mathematical::pi));
 }
 
 
@@ -79,14 +108,15 @@ Foam::scalar Foam::apparentHeatCapacityModel::sigmaSqrIntegral
     //   int erf   = x erf + exp(-x^2)/sqrt(pi)
     //   int erf^2 = x erf^2 + 2/sqrt(pi) erf exp(-x^2) - sqrt(2/pi) erf(sqrt2 x)
     const scalar xi = x(T);
-    const scalar e = ::erf(xi);
-    const scalar g = ::exp(-sqr(xi));
+    scalar e, g, e2, g2;
+    erfAndGauss(xi, e, g);
+    erfAndGauss(sqrt(2.0)*xi, e2, g2);
     const scalar sqrtPi = sqrt(constant::mathematical::pi);
 
     const scalar intErf = xi*e + g/sqrtPi;
     const scalar intErfSqr =
         xi*sqr(e) + 2.0/sqrtPi*e*g
-      - sqrt(2.0/constant::mathematical::pi)*::erf(sqrt(2.0)*xi);
+      - sqrt(2.0/constant::mathematical::pi)*e2;
 
     return 0.25*sqrt(2.0)*dT_*(xi + 2.0*intErf + intErfSqr);
 }
@@ -96,15 +126,17 @@ Foam::scalar Foam::apparentHeatCapacityModel::sigmaSqrIntegral
 
 Foam::scalar Foam::apparentHeatCapacityModel::sigma(const scalar T) const
 {
-    return 0.5*(1.0 + ::erf(x(T)));
+    scalar e, g;
+    erfAndGauss(x(T), e, g);
+    return 0.5*(1.0 + e);
 }
 
 
 Foam::scalar Foam::apparentHeatCapacityModel::dSigmaDT(const scalar T) const
 {
-    return
-        ::exp(-sqr(x(T)))
-       /(sqrt(2.0*constant::mathematical::pi)*dT_);
+    scalar e, g;
+    erfAndGauss(x(T), e, g);
+    return g/(sqrt(2.0*constant::mathematical::pi)*dT_);
 }
 
 

@@ -20,10 +20,11 @@ Foam::apparentHeatCapacityModel::New
 
     if (!cstrIter.found())
     {
+        // "Unknown phaseChange type <name>", with the valid choices
         FatalIOErrorInLookup
         (
             dict,
-            "type",
+            "phaseChange",
             modelType,
             *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);

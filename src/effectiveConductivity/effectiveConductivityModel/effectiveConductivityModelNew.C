@@ -9,6 +9,16 @@
 Foam::autoPtr<Foam::effectiveConductivityModel>
 Foam::effectiveConductivityModel::New(const dictionary& dict)
 {
+    if (!dict.found("conductivityModel"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword 'conductivityModel' in dictionary "
+            << dict.name() << ": expected one of the valid"
+            << " conductivityModel types :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc() << nl
+            << exit(FatalIOError);
+    }
+
     const word modelType(dict.get<word>("conductivityModel"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);

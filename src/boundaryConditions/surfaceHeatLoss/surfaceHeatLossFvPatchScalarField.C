@@ -1,0 +1,310 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "surfaceHeatLossFvPatchScalarField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvPatchFieldMapper.H"
+#include "volFields.H"
+#include "physicoChemicalConstants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::surfaceHeatLossFvPatchScalarField::checkRange
+(
+    const word& keyword,
+    const scalar value,
+    const validRange& range
+) const
+{
+    if (!range.contains(value))
+    {
+        dictionary dict;
+        dict.name() = dictName_;
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' = " << value
+            << " (time " << db().time().timeOutputValue() << ")"
+            << " of boundary condition " << type()
+            << " on patch '" << patch().name() << "' of field "
+            << internalField().name()
+            << " is outside its valid range " << range.str().c_str()
+            << " in dictionary " << dictName_ << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::surfaceHeatLossFvPatchScalarField::values
+(
+    scalar& h,
+    scalar& Tair,
+    scalar& Tsky
+) const
+{
+    const scalar t = db().time().timeOutputValue();
+
+    h = h_->value(t);
+    Tair = Tair_->value(t);
+    Tsky = Tsky_.valid() ? Tsky_->value(t) : Tair;
+
+    checkRange("h", h, checkedRead::nonNegative());
+    checkRange("Tair", Tair, checkedRead::positive());
+    if (Tsky_.valid())
+    {
+        checkRange("Tsky", Tsky, checkedRead::nonNegative());
+    }
+}
+
+
+const Foam::scalarField&
+Foam::surfaceHeatLossFvPatchScalarField::kappa() const
+{
+    const volScalarField* kappaPtr =
+        db().cfindObject<volScalarField>(kappaName_);
+
+    if (!kappaPtr)
+    {
+        FatalErrorInFunction
+            << "Boundary condition " << type() << " on patch '"
+            << patch().name() << "' of field " << internalField().name()
+            << " needs the conductivity [W/m/K] as a volScalarField named '"
+            << kappaName_ << "' in the mesh registry, and there is none."
+            << nl << "    ahcFoam registers the soil's effective"
+            << " conductivity as 'kappa'; with another solver, set"
+            << " 'kappa <fieldName>;' in the patch entry." << nl
+            << exit(FatalError);
+    }
+
+    const scalarField& kappap = kappaPtr->boundaryField()[patch().index()];
+
+    forAll(kappap, facei)
+    {
+        if (!(kappap[facei] > 0))
+        {
+            FatalErrorInFunction
+                << "Boundary condition " << type() << " on patch '"
+                << patch().name() << "' of field " << internalField().name()
+                << ": conductivity '" << kappaName_ << "' = "
+                << kappap[facei] << " on face " << facei
+                << " is not positive" << nl
+                << exit(FatalError);
+        }
+    }
+
+    return kappap;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    mixedFvPatchScalarField(p, iF),
+    h_(),
+    Tair_(),
+    Tsky_(),
+    emissivity_(0),
+    kappaName_("kappa"),
+    dictName_(iF.objectPath())
+{
+    refValue() = Zero;
+    refGrad() = Zero;
+    valueFraction() = Zero;
+}
+
+
+Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    mixedFvPatchScalarField(p, iF),
+    h_(Function1<scalar>::New("h", dict)),
+    Tair_(Function1<scalar>::New("Tair", dict)),
+    Tsky_(),
+    emissivity_(dict.getOrDefault<scalar>("emissivity", 0)),
+    kappaName_(dict.getOrDefault<word>("kappa", "kappa")),
+    dictName_(dict.name())
+{
+    if (dict.found("Tsky"))
+    {
+        Tsky_ = Function1<scalar>::New("Tsky", dict);
+    }
+
+    checkRange("emissivity", emissivity_, checkedRead::closed(0, 1));
+
+    // Range of the Function1s at the start time
+    scalar h, Tair, Tsky;
+    values(h, Tair, Tsky);
+
+    if (dict.found("value"))
+    {
+        fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchScalarField::operator=(patchInternalField());
+    }
+
+    if (dict.found("refValue"))
+    {
+        // Restart: the coefficients of the last step
+        refValue() = scalarField("refValue", dict, p.size());
+        refGrad() = scalarField("refGradient", dict, p.size());
+        valueFraction() = scalarField("valueFraction", dict, p.size());
+    }
+    else
+    {
+        // Set at the first update (the conductivity field may not exist
+        // yet); zero-gradient until then
+        refValue() = *this;
+        refGrad() = Zero;
+        valueFraction() = Zero;
+    }
+}
+
+
+Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
+(
+    const surfaceHeatLossFvPatchScalarField& ptf,
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    mixedFvPatchScalarField(ptf, p, iF, mapper),
+    h_(ptf.h_.clone()),
+    Tair_(ptf.Tair_.clone()),
+    Tsky_(ptf.Tsky_.clone()),
+    emissivity_(ptf.emissivity_),
+    kappaName_(ptf.kappaName_),
+    dictName_(ptf.dictName_)
+{}
+
+
+Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
+(
+    const surfaceHeatLossFvPatchScalarField& ptf
+)
+:
+    mixedFvPatchScalarField(ptf),
+    h_(ptf.h_.clone()),
+    Tair_(ptf.Tair_.clone()),
+    Tsky_(ptf.Tsky_.clone()),
+    emissivity_(ptf.emissivity_),
+    kappaName_(ptf.kappaName_),
+    dictName_(ptf.dictName_)
+{}
+
+
+Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
+(
+    const surfaceHeatLossFvPatchScalarField& ptf,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    mixedFvPatchScalarField(ptf, iF),
+    h_(ptf.h_.clone()),
+    Tair_(ptf.Tair_.clone()),
+    Tsky_(ptf.Tsky_.clone()),
+    emissivity_(ptf.emissivity_),
+    kappaName_(ptf.kappaName_),
+    dictName_(ptf.dictName_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField>
+Foam::surfaceHeatLossFvPatchScalarField::heatFlux() const
+{
+    scalar h, Tair, Tsky;
+    values(h, Tair, Tsky);
+
+    const scalar epsSigma =
+        emissivity_*constant::physicoChemical::sigma.value();
+    const scalarField& Tw = *this;
+
+    return h*(Tair - Tw) + epsSigma*(pow4(Tsky) - pow4(Tw));
+}
+
+
+void Foam::surfaceHeatLossFvPatchScalarField::updateCoeffs()
+{
+    if (updated())
+    {
+        return;
+    }
+
+    scalar h, Tair, Tsky;
+    values(h, Tair, Tsky);
+
+    const scalar epsSigma =
+        emissivity_*constant::physicoChemical::sigma.value();
+    const scalar skyTerm = epsSigma*pow4(Tsky);
+
+    const scalarField& kappap = kappa();
+    const scalarField& deltaCoeffs = patch().deltaCoeffs();
+    const scalarField& Tw = *this;
+
+    scalarField& Tref = refValue();
+    scalarField& f = valueFraction();
+
+    forAll(Tw, facei)
+    {
+        // Linearisation point of the radiative term
+        const scalar T0 = max(Tw[facei], scalar(0));
+
+        const scalar hEff = h + 4*epsSigma*pow3(T0);
+
+        if (hEff > 0)
+        {
+            Tref[facei] = (h*Tair + skyTerm + 3*epsSigma*pow4(T0))/hEff;
+            f[facei] = hEff/(hEff + kappap[facei]*deltaCoeffs[facei]);
+        }
+        else
+        {
+            // No exchange: zero flux
+            Tref[facei] = Tw[facei];
+            f[facei] = 0;
+        }
+    }
+
+    refGrad() = Zero;
+
+    mixedFvPatchScalarField::updateCoeffs();
+}
+
+
+void Foam::surfaceHeatLossFvPatchScalarField::write(Ostream& os) const
+{
+    mixedFvPatchScalarField::write(os);
+    h_->writeData(os);
+    Tair_->writeData(os);
+    if (Tsky_.valid())
+    {
+        Tsky_->writeData(os);
+    }
+    os.writeEntry("emissivity", emissivity_);
+    os.writeEntryIfDifferent<word>("kappa", "kappa", kappaName_);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchScalarField,
+        surfaceHeatLossFvPatchScalarField
+    );
+}
+
+// ************************************************************************* //
