@@ -14,7 +14,8 @@ void Foam::surfaceHeatLossFvPatchScalarField::checkRange
 (
     const word& keyword,
     const scalar value,
-    const validRange& range
+    const validRange& range,
+    const bool ofTime
 ) const
 {
     if (!range.contains(value))
@@ -22,13 +23,17 @@ void Foam::surfaceHeatLossFvPatchScalarField::checkRange
         dictionary dict;
         dict.name() = dictName_;
         FatalIOErrorInFunction(dict)
-            << "Keyword '" << keyword << "' = " << value
-            << " (time " << db().time().timeOutputValue() << ")"
+            << "Keyword '" << keyword << "' = " << value;
+        if (ofTime)
+        {
+            FatalIOError
+                << " (time " << db().time().timeOutputValue() << ")";
+        }
+        FatalIOError
             << " of boundary condition " << type()
             << " on patch '" << patch().name() << "' of field "
             << internalField().name()
-            << " is outside its valid range " << range.str().c_str()
-            << " in dictionary " << dictName_ << nl
+            << " is outside its valid range " << range.str().c_str() << nl
             << exit(FatalIOError);
     }
 }
@@ -47,11 +52,11 @@ void Foam::surfaceHeatLossFvPatchScalarField::values
     Tair = Tair_->value(t);
     Tsky = Tsky_.valid() ? Tsky_->value(t) : Tair;
 
-    checkRange("h", h, checkedRead::nonNegative());
-    checkRange("Tair", Tair, checkedRead::positive());
+    checkRange("h", h, checkedRead::nonNegative(), true);
+    checkRange("Tair", Tair, checkedRead::positive(), true);
     if (Tsky_.valid())
     {
-        checkRange("Tsky", Tsky, checkedRead::nonNegative());
+        checkRange("Tsky", Tsky, checkedRead::nonNegative(), true);
     }
 }
 
@@ -137,7 +142,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
         Tsky_ = Function1<scalar>::New("Tsky", dict);
     }
 
-    checkRange("emissivity", emissivity_, checkedRead::closed(0, 1));
+    checkRange("emissivity", emissivity_, checkedRead::closed(0, 1), false);
 
     // Range of the Function1s at the start time
     scalar h, Tair, Tsky;
