@@ -1,0 +1,686 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "thermocouples.H"
+#include "volFields.H"
+#include "interpolation.H"
+#include "IFstream.H"
+#include "HashTable.H"
+#include "OStringStream.H"
+#include "ListOps.H"
+#include "Time.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(thermocouples, 0);
+
+    addToRunTimeSelectionTable
+    (
+        functionObject,
+        thermocouples,
+        dictionary
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Offset from K to C
+constexpr Foam::scalar zeroCelsius = 273.15;
+
+// Most faulty lines listed in one error message
+constexpr Foam::label maxListed = 20;
+
+// The columns of a line: separated by runs of commas, semicolons and white
+// space, with surrounding double quotes removed
+Foam::DynamicList<std::string> splitColumns(const std::string& line)
+{
+    Foam::DynamicList<std::string> cols;
+    std::string::size_type pos = 0;
+    const char* seps = ",; \t\r\v\f";
+
+    while (true)
+    {
+        const auto beg = line.find_first_not_of(seps, pos);
+        if (beg == std::string::npos)
+        {
+            break;
+        }
+        auto end = line.find_first_of(seps, beg);
+        if (end == std::string::npos)
+        {
+            end = line.size();
+        }
+
+        std::string col(line, beg, end - beg);
+        if (col.size() >= 2 && col.front() == '"' && col.back() == '"')
+        {
+            col = col.substr(1, col.size() - 2);
+        }
+        cols.append(col);
+        pos = end;
+    }
+
+    return cols;
+}
+
+
+// A finite number (the whole string)
+bool readNumber(const std::string& s, Foam::scalar& value)
+{
+    return Foam::readScalar(s, value) && std::isfinite(value);
+}
+
+
+// Silences Info and Warning for its lifetime (probes' own messages)
+class silence
+{
+    const int level_;
+
+public:
+
+    silence()
+    :
+        level_(Foam::messageStream::level)
+    {
+        Foam::messageStream::level = 0;
+    }
+
+    ~silence()
+    {
+        Foam::messageStream::level = level_;
+    }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::functionObjects::thermocouples::readSensorFile
+(
+    pointField& positions,
+    wordList& names,
+    labelList& lines,
+    labelList& errorLines,
+    List<string>& errors
+) const
+{
+    // Read on the master, which sends the sensors and the errors on
+    if (Pstream::master())
+    {
+        DynamicList<point> pts;
+        DynamicList<word> nms;
+        DynamicList<label> lns;
+        DynamicList<label> errLns;
+        DynamicList<string> errs;
+        HashTable<label, word> firstLine;
+
+        auto addError = [&](const label lineNo, const std::string& msg)
+        {
+            errLns.append(lineNo);
+            errs.append(msg);
+        };
+
+        IFstream is(sensorFile_);
+
+        if (!is.good())
+        {
+            addError(-1, "cannot open the sensor file (missing or unreadable)");
+        }
+        else
+        {
+            std::string line;
+            label lineNo = 0;
+            bool firstData = true;
+
+            while (is.good())
+            {
+                is.getLine(line);
+                if (line.empty() && is.eof())
+                {
+                    break;
+                }
+                ++lineNo;
+
+                if (lineNo == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+                {
+                    line.erase(0, 3);     // UTF-8 byte order mark
+                }
+                const auto hash = line.find('#');
+                if (hash != std::string::npos)
+                {
+                    line.erase(hash);
+                }
+
+                const DynamicList<std::string> cols(splitColumns(line));
+                if (cols.empty())
+                {
+                    continue;
+                }
+
+                // The line as read (trimmed), for the messages
+                std::string text(line);
+                text.erase(0, text.find_first_not_of(" \t"));
+                text.erase(text.find_last_not_of(" \t\r\n") + 1);
+                const std::string where
+                (
+                    "line " + std::to_string(lineNo) + " \"" + text + "\": "
+                );
+
+                scalar xyz[3] = {0, 0, 0};
+                bool numeric[3] = {false, false, false};
+                if (cols.size() == 4)
+                {
+                    for (label i = 0; i < 3; ++i)
+                    {
+                        numeric[i] = readNumber(cols[i + 1], xyz[i]);
+                    }
+                }
+
+                // Optional header line: the first one, with no number in
+                // its last three columns
+                if
+                (
+                    firstData && cols.size() == 4
+                 && !numeric[0] && !numeric[1] && !numeric[2]
+                )
+                {
+                    firstData = false;
+                    continue;
+                }
+                firstData = false;
+
+                if (cols.size() != 4)
+                {
+                    addError
+                    (
+                        lineNo,
+                        where + "sensor '" + cols[0] + "': expected 4"
+                        " columns (name, x, y, z), found "
+                      + std::to_string(cols.size())
+                    );
+                    continue;
+                }
+
+                const std::string& name = cols[0];
+                bool ok = true;
+
+                bool validName = !name.empty();
+                for (const char c : name)
+                {
+                    validName = validName && word::valid(c);
+                }
+                if (!validName)
+                {
+                    addError
+                    (
+                        lineNo,
+                        where + "sensor name '" + name + "' contains white"
+                        " space, a quote or one of / ; { }"
+                    );
+                    ok = false;
+                }
+
+                const char* axis[3] = {"x", "y", "z"};
+                for (label i = 0; i < 3; ++i)
+                {
+                    if (!numeric[i])
+                    {
+                        addError
+                        (
+                            lineNo,
+                            where + "sensor '" + name + "': " + axis[i]
+                          + " = '" + cols[i + 1] + "' is not a number"
+                        );
+                        ok = false;
+                    }
+                }
+
+                if (!ok)
+                {
+                    continue;
+                }
+
+                const word sensor(name, false);
+                const auto iter = firstLine.cfind(sensor);
+                if (iter.found())
+                {
+                    addError
+                    (
+                        lineNo,
+                        where + "duplicate sensor name '" + name
+                      + "' (first at line " + std::to_string(*iter) + ")"
+                    );
+                    continue;
+                }
+
+                firstLine.insert(sensor, lineNo);
+                nms.append(sensor);
+                pts.append(point(xyz[0], xyz[1], xyz[2]));
+                lns.append(lineNo);
+            }
+
+            if (errs.empty() && nms.empty())
+            {
+                addError(-1, "no sensors in the file");
+            }
+        }
+
+        positions.transfer(pts);
+        names.transfer(nms);
+        lines.transfer(lns);
+        errorLines.transfer(errLns);
+        errors.transfer(errs);
+    }
+
+    Pstream::scatter(positions);
+    Pstream::scatter(names);
+    Pstream::scatter(lines);
+    Pstream::scatter(errorLines);
+    Pstream::scatter(errors);
+}
+
+
+Foam::labelList Foam::functionObjects::thermocouples::locate
+(
+    const fvMesh& mesh
+)
+{
+    // probes' search (its warnings silenced: replaced by ours)
+    {
+        silence quiet;
+        probes::findElements(mesh);
+    }
+
+    // Keep each sensor on the lowest-numbered processor that found it
+    labelList owner(size(), Pstream::nProcs());
+    nFound_.setSize(size());
+    nFound_ = 0;
+    forAll(owner, i)
+    {
+        if (elementList_[i] != -1)
+        {
+            owner[i] = Pstream::myProcNo();
+            nFound_[i] = 1;
+        }
+    }
+    Pstream::listCombineGather(owner, minEqOp<label>());
+    Pstream::listCombineScatter(owner);
+    Pstream::listCombineGather(nFound_, plusEqOp<label>());
+    Pstream::listCombineScatter(nFound_);
+
+    DynamicList<label> outside;
+    forAll(owner, i)
+    {
+        if (owner[i] != Pstream::myProcNo())
+        {
+            elementList_[i] = -1;
+            faceList_[i] = -1;
+        }
+
+        if (owner[i] == Pstream::nProcs())
+        {
+            processor_[i] = -1;
+            outside.append(i);
+        }
+        else
+        {
+            processor_[i] = owner[i];
+        }
+    }
+
+    return labelList(std::move(outside));
+}
+
+
+void Foam::functionObjects::thermocouples::fatal
+(
+    const labelList& errorLines,
+    const List<string>& errors,
+    const label nOutside
+) const
+{
+    // The errors in the order of the lines
+    const labelList order(sortedOrder(errorLines));
+
+    OSstream& os =
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            sensorFile_, errorLines[order[0]], -1
+        );
+
+    os  << "Sensor file " << sensorFile_ << " of function object '"
+        << name() << "' (" << typeName << "): " << errors.size()
+        << " error(s)";
+
+    forAll(order, k)
+    {
+        if (k == maxListed)
+        {
+            os  << nl << "    ... and " << errors.size() - maxListed
+                << " more";
+            break;
+        }
+        os  << nl << "    " << errors[order[k]].c_str();
+    }
+
+    if (errors.size() > nOutside)
+    {
+        os  << nl << "Each line: name, x, y, z (metres), separated by"
+            << " commas or white space; '#' starts a comment; optional"
+            << " header line";
+    }
+    if (nOutside)
+    {
+        os  << nl << "The mesh spans " << mesh_.bounds() << " m. A sensor"
+            << " exactly on the outer boundary of the mesh may not be"
+            << " found: move it slightly inside";
+    }
+
+    os  << exit(FatalIOError);
+}
+
+
+void Foam::functionObjects::thermocouples::addOutside
+(
+    const labelList& outside,
+    DynamicList<label>& errorLines,
+    DynamicList<string>& errors
+) const
+{
+    for (const label i : outside)
+    {
+        OStringStream msg;
+        msg << "line " << lines_[i] << ": sensor '" << names_[i].c_str()
+            << "' at " << operator[](i) << " m is outside the mesh";
+        if (Pstream::parRun())
+        {
+            msg << " (of every processor)";
+        }
+        errorLines.append(lines_[i]);
+        errors.append(msg.str());
+    }
+}
+
+
+void Foam::functionObjects::thermocouples::openFile()
+{
+    csvPtr_.clear();
+
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const fileName file(csvFile());
+    mkDir(file.path());
+    csvPtr_.reset(new OFstream(file));
+
+    OFstream& os = *csvPtr_;
+    os  << "time_s";
+    for (const word& n : names_)
+    {
+        os  << ',' << n.c_str();
+    }
+    os  << endl;
+}
+
+
+bool Foam::functionObjects::thermocouples::writeRow()
+{
+    const volScalarField* fieldPtr =
+        mesh_.findObject<volScalarField>(fieldName_);
+
+    // Same answer on all ranks (the field is registered on all or none)
+    if (!returnReduce(fieldPtr != nullptr, andOp<bool>()))
+    {
+        return false;
+    }
+
+    // Sampled and gathered by probes: all values on all ranks
+    scalarField values(sample(*fieldPtr));
+
+    if (unit_ == "C")
+    {
+        values -= zeroCelsius;
+    }
+
+    if (Pstream::master() && csvPtr_.valid())
+    {
+        OFstream& os = *csvPtr_;
+
+        os.precision(12);
+        os  << mesh_.time().value();
+
+        os.precision(precision_);
+        for (const scalar v : values)
+        {
+            os  << ',' << v;
+        }
+        os  << endl;
+    }
+
+    return true;
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::thermocouples::findElements(const fvMesh& mesh)
+{
+    const labelList outside(locate(mesh));
+
+    if (outside.size())
+    {
+        DynamicList<label> errorLines;
+        DynamicList<string> errors;
+        addOutside(outside, errorLines, errors);
+        fatal(errorLines, errors, outside.size());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::thermocouples::thermocouples
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    probes(name, runTime, dict, false, false),
+    sensorFile_(),
+    fieldName_("T"),
+    unit_("C"),
+    precision_(10),
+    names_(),
+    lines_(),
+    nFound_(),
+    csvPtr_()
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fileName Foam::functionObjects::thermocouples::csvFile() const
+{
+    fileName dir = mesh_.time().globalPath()/functionObject::outputPrefix/name();
+
+    if (mesh_.name() != polyMesh::defaultRegion)
+    {
+        dir = dir/mesh_.name();
+    }
+    dir = dir/mesh_.time().timeName();
+    dir.clean();
+
+    return dir/"sensors.csv";
+}
+
+
+bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
+{
+    // The output so far (a re-read with the same output keeps its file)
+    const string oldSettings
+    (
+        fieldName_ + ' ' + interpolationScheme_ + ' ' + unit_
+    );
+
+    // Settings
+    fileName file(dict.get<fileName>("file"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = mesh_.time().globalPath()/file;
+    }
+    file.clean();
+    sensorFile_ = file;
+
+    fieldName_ = dict.getOrDefault<word>("field", "T");
+
+    interpolationScheme_ =
+        dict.getOrDefault<word>("interpolationScheme", "cellPoint");
+    if
+    (
+        !interpolation<scalar>::dictionaryConstructorTablePtr_
+     || !interpolation<scalar>::dictionaryConstructorTablePtr_->found
+        (
+            interpolationScheme_
+        )
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown interpolationScheme " << interpolationScheme_
+            << " in function object '" << name() << "'; valid schemes: "
+            << interpolation<scalar>::dictionaryConstructorTablePtr_
+               ->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    unit_ = dict.getOrDefault<word>("unit", "C");
+    if (unit_ != "C" && unit_ != "K")
+    {
+        FatalIOErrorInFunction(dict)
+            << "unit " << unit_ << " in function object '" << name()
+            << "' is neither C nor K" << exit(FatalIOError);
+    }
+
+    precision_ = dict.getOrDefault<label>("precision", 10);
+    if (precision_ < 1 || precision_ > 17)
+    {
+        FatalIOErrorInFunction(dict)
+            << "precision " << precision_ << " in function object '"
+            << name() << "' is outside [1, 17]" << exit(FatalIOError);
+    }
+
+    // probes' settings: sample fieldName_ at fixed locations
+    fieldSelection_ = wordRes(1, wordRe(fieldName_));
+    fixedLocations_ = true;
+    includeOutOfBounds_ = true;
+
+    // Sensors: the file's errors and the sensors outside the mesh are
+    // reported together, in the order of the lines
+    pointField positions;
+    wordList names;
+    labelList lines;
+    labelList fileErrorLines;
+    List<string> fileErrors;
+    readSensorFile(positions, names, lines, fileErrorLines, fileErrors);
+
+    const bool changed =
+    (
+        names != names_
+     || positions != static_cast<const pointField&>(*this)
+     || oldSettings != fieldName_ + ' ' + interpolationScheme_ + ' ' + unit_
+    );
+
+    names_.transfer(names);
+    lines_.transfer(lines);
+    static_cast<pointField&>(*this) = positions;
+
+    const labelList outside(locate(mesh_));
+
+    if (fileErrors.size() || outside.size())
+    {
+        DynamicList<label> errorLines(fileErrorLines);
+        DynamicList<string> errors(fileErrors);
+        addOutside(outside, errorLines, errors);
+        fatal(errorLines, errors, outside.size());
+    }
+
+    if (changed)
+    {
+        Info<< type() << ' ' << name() << ": " << size() << " sensors from "
+            << sensorFile_ << ", field " << fieldName_ << " ("
+            << interpolationScheme_ << ") in " << unit_ << nl;
+        forAll(names_, i)
+        {
+            Info<< "    " << names_[i] << ' ' << operator[](i);
+            if (Pstream::parRun())
+            {
+                Info<< " on processor " << processor_[i];
+                if (nFound_[i] > 1)
+                {
+                    Info<< " (found on " << nFound_[i] << " processors:"
+                        << " on their boundary)";
+                }
+            }
+            Info<< nl;
+        }
+
+        openFile();
+
+        if (writeRow())
+        {
+            Info<< "    writing " << csvFile() << nl;
+        }
+        else
+        {
+            Info<< "    writing " << csvFile() << " (field " << fieldName_
+                << " not yet available: no row at time "
+                << mesh_.time().timeName() << ')' << nl;
+        }
+        Info<< endl;
+    }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::thermocouples::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::thermocouples::write()
+{
+    if (!writeRow())
+    {
+        FatalErrorInFunction
+            << "Function object '" << name() << "': no volScalarField "
+            << fieldName_ << " in the registry of mesh " << mesh_.name()
+            << exit(FatalError);
+    }
+
+    return true;
+}
+
+
+// ************************************************************************* //
