@@ -24,8 +24,9 @@ Description
     - altered volume: the sum of the volumes of the cells whose TMax >=
       threshold (cells are counted whole: the volume is exact to within the
       cells cut by the isotherm). On a wedge (axisymmetric) mesh also the
-      full-revolution volume: sector volume x 360/(wedge angle), the angle
-      taken from the two wedge patches.
+      full-revolution volume, that of the mid-plane section revolved about
+      the axis: sector volume x pi/tan(angle/2) (= 360/angle to 0.06 % at
+      5 degrees), the angle taken from the two wedge patches.
 
     Writes, per time, postProcessing/hearthAlteration/<time>/
         alteration_<threshold>C.csv   line,depth_m
@@ -34,9 +35,10 @@ Description
     and prints the same table. Serial and parallel (-parallel on the
     decomposed case) give the same numbers (reductions over the ranks).
 
-    Boundary values of TMax: ahcFoam writes them as 'calculated' values
-    that are not maxima over time; the interpolation uses at each boundary
-    face the larger of the written value and the adjacent cell's value.
+    Boundary values of TMax: the interpolation uses at each boundary face
+    the larger of the written value and the adjacent cell's value (ahcFoam
+    writes the maximum of the boundary temperature since commit b5b3f2d;
+    results of earlier versions hold 0 there).
 
     system/hearthAlterationDict (see the annotated example in this folder):
 
@@ -71,6 +73,9 @@ Usage
 #include "wedgePolyPatch.H"
 #include "globalIndex.H"
 #include "OFstream.H"
+#include "IOmanip.H"
+#include <iomanip>
+#include <sstream>
 #include "unitConversion.H"
 #include "checkedRead.H"
 
@@ -90,6 +95,31 @@ static const wordList lineSetTypes
 word thresholdName(const scalar thresholdC)
 {
     return word(Foam::name(thresholdC));
+}
+
+//- A list of numbers as (a b c)
+std::string listText(const UList<scalar>& values)
+{
+    std::ostringstream os;
+    os << '(';
+    forAll(values, i)
+    {
+        os << (i ? " " : "") << values[i];
+    }
+    os << ')';
+    return os.str();
+}
+
+//- A number as text: 'digits' significant digits, or decimals if fixed
+std::string formatted(const scalar x, const int digits, const bool fixed)
+{
+    std::ostringstream os;
+    if (fixed)
+    {
+        os << std::fixed;
+    }
+    os << std::setprecision(digits) << x;
+    return os.str();
 }
 
 #include "alterationDepth.H"
@@ -119,11 +149,21 @@ int main(int argc, char *argv[])
     #include "readHearthAlterationDict.H"
     #include "createLines.H"
 
+    // Wedge: the full-revolution volume of the soil the wedge represents
+    // (its mid-plane section revolved about the axis) is the sector volume
+    // x pi/tan(angle/2): a cell at radius r of the mid-plane is
+    // 2 r tan(angle/2) thick, its ring 2 pi r (360/angle is 0.06 % larger
+    // at 5 degrees)
     const scalar wedgeDeg = wedgeAngle(mesh);
+    const scalar revolution =
+        wedgeDeg > 0 ? constant::mathematical::pi/Foam::tan(degToRad(wedgeDeg/2)) : 0;
+
     if (wedgeDeg > 0)
     {
-        Info<< "Wedge mesh of " << wedgeDeg << " degrees: full-revolution"
-            << " volumes = sector volumes x " << 360/wedgeDeg << nl << endl;
+        Info<< "Wedge mesh of " << formatted(wedgeDeg, 6, false).c_str()
+            << " degrees: full-revolution volume = sector volume x "
+            << formatted(revolution, 6, false).c_str()
+            << " (pi/tan(angle/2))" << nl << endl;
     }
 
     const fileName outputDir
