@@ -1,0 +1,1005 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fireTemperatureFvPatchScalarField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvPatchFieldMapper.H"
+#include "volFields.H"
+#include "DynamicList.H"
+#include "OSspecific.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Spaces, tabs and a Windows '\r' trimmed at both ends; surrounding double
+// quotes removed (spreadsheets quote fields)
+std::string trimField(const std::string& s)
+{
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string::npos)
+    {
+        return std::string();
+    }
+    const auto e = s.find_last_not_of(" \t\r");
+    std::string t(s.substr(b, e - b + 1));
+    if (t.size() >= 2 && t.front() == '"' && t.back() == '"')
+    {
+        t = t.substr(1, t.size() - 2);
+    }
+    return t;
+}
+
+
+// The fields of a line: at each separator, or at runs of spaces and tabs
+// for separator '\0'
+std::vector<std::string> splitLine(const std::string& line, const char sep)
+{
+    std::vector<std::string> fields;
+    std::size_t pos = 0;
+
+    if (sep == '\0')
+    {
+        while (true)
+        {
+            const auto b = line.find_first_not_of(" \t\r", pos);
+            if (b == std::string::npos)
+            {
+                break;
+            }
+            const auto e = line.find_first_of(" \t\r", b);
+            fields.push_back
+            (
+                trimField
+                (
+                    line.substr(b, e == std::string::npos ? e : e - b)
+                )
+            );
+            if (e == std::string::npos)
+            {
+                break;
+            }
+            pos = e;
+        }
+    }
+    else
+    {
+        while (true)
+        {
+            const auto e = line.find(sep, pos);
+            fields.push_back
+            (
+                trimField
+                (
+                    line.substr(pos, e == std::string::npos ? e : e - pos)
+                )
+            );
+            if (e == std::string::npos)
+            {
+                break;
+            }
+            pos = e + 1;
+        }
+    }
+
+    return fields;
+}
+
+
+// A whole field read as a number (strtod: also nan and inf, caught later)
+bool parseNumber(const std::string& s, Foam::scalar& x)
+{
+    if (s.empty())
+    {
+        return false;
+    }
+    const char* begin = s.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (end == begin || end != begin + s.size())
+    {
+        return false;
+    }
+    x = v;
+    return true;
+}
+
+
+// A line to skip anywhere: blank, or a '#' comment
+bool skipLine(const std::string& line)
+{
+    const auto b = line.find_first_not_of(" \t\r");
+    return b == std::string::npos || line[b] == '#';
+}
+
+
+// The line for messages (without a '\r', cut if long)
+std::string showLine(const std::string& line)
+{
+    std::string s(line);
+    if (!s.empty() && s.back() == '\r')
+    {
+        s.pop_back();
+    }
+    if (s.size() > 120)
+    {
+        s = s.substr(0, 117) + "...";
+    }
+    return s;
+}
+
+
+// Keywords of the patch entry
+const char* const knownKeywords[] =
+{
+    "type", "file", "table", "timeColumn", "temperatureColumn", "separator",
+    "headerLines", "timeUnit", "temperatureUnit", "timeOffset",
+    "beforeStart", "afterEnd", "value", "patchType"
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fireTemperatureFvPatchScalarField::timeFactor() const
+{
+    if (timeUnit_ == "min")
+    {
+        return 60;
+    }
+    else if (timeUnit_ == "h")
+    {
+        return 3600;
+    }
+    return 1;
+}
+
+
+Foam::scalar Foam::fireTemperatureFvPatchScalarField::kelvin
+(
+    const scalar theta
+) const
+{
+    return temperatureUnit_ == "C" ? theta + 273.15 : theta;
+}
+
+
+Foam::string Foam::fireTemperatureFvPatchScalarField::describeSource() const
+{
+    OStringStream os;
+    os  << "the fire history of boundary condition " << type()
+        << " on patch '" << patch().name() << "' of field "
+        << internalField().name();
+    if (file_.size())
+    {
+        os  << " (file \"" << fileEntry_.c_str() << "\", read as "
+            << file_ << ")";
+    }
+    else
+    {
+        os  << " (inline table in " << dictName_ << ")";
+    }
+    return os.str();
+}
+
+
+std::string Foam::fireTemperatureFvPatchScalarField::separatorName() const
+{
+    if (separator_ == '\0')
+    {
+        return "whitespace";
+    }
+    else if (separator_ == '\t')
+    {
+        return "tab";
+    }
+    return std::string("'") + separator_ + "'";
+}
+
+
+Foam::string Foam::fireTemperatureFvPatchScalarField::describeTime
+(
+    const label rowi
+) const
+{
+    OStringStream os;
+    os  << "t = " << times_[rowi] << " s";
+    if (timeUnit_ != "s" || timeOffset_ != 0)
+    {
+        os  << " (" << (times_[rowi] + timeOffset_)/timeFactor() << ' '
+            << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
+            << ")";
+    }
+    return os.str();
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::readKeywords
+(
+    const dictionary& dict
+)
+{
+    // Common tail of the keyword errors
+    auto where = [&]() -> string
+    {
+        return
+            " in the entry of boundary condition " + type() + " on patch '"
+          + patch().name() + "' of field " + internalField().name();
+    };
+
+    // Unknown keywords (a misspelt 'timeUnit' would silently give seconds)
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        bool known = false;
+        for (const char* k : knownKeywords)
+        {
+            known = known || key == k;
+        }
+        if (!known)
+        {
+            OStringStream valid;
+            for (const char* k : knownKeywords)
+            {
+                valid << ' ' << k;
+            }
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << key << "'" << where().c_str()
+                << nl << "    Valid keywords:" << valid.str().c_str() << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    // Columns
+    auto readColumn = [&](const word& key, const label deflt) -> label
+    {
+        const label c = dict.getOrDefault<label>(key, deflt);
+        if (c < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword '" << key << "' = " << c << where().c_str()
+                << " is outside its valid range [0, inf)"
+                << " (columns count from 0)" << nl
+                << exit(FatalIOError);
+        }
+        return c;
+    };
+    timeColumn_ = readColumn("timeColumn", 0);
+    temperatureColumn_ = readColumn("temperatureColumn", 1);
+    if (timeColumn_ == temperatureColumn_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keywords 'timeColumn' and 'temperatureColumn' are both "
+            << timeColumn_ << where().c_str()
+            << ": they must name different columns" << nl
+            << exit(FatalIOError);
+    }
+
+    // Separator: a character (word, string or punctuation), or whitespace
+    separator_ = ',';
+    if (dict.found("separator"))
+    {
+        ITstream& is = dict.lookup("separator");
+        token tok;
+        is.read(tok);
+        std::string s;
+        if (tok.isWord())
+        {
+            s = tok.wordToken();
+        }
+        else if (tok.isString())
+        {
+            s = tok.stringToken();
+        }
+        else if (tok.isPunctuation())
+        {
+            s = std::string(1, char(tok.pToken()));
+        }
+
+        if (s == "whitespace" || s == "space" || s == " ")
+        {
+            separator_ = '\0';
+        }
+        else if (s == "tab" || s == "\\t" || s == "\t")
+        {
+            separator_ = '\t';
+        }
+        else if (s.size() == 1 && s != "#" && s != "\"")
+        {
+            separator_ = s[0];
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'separator' = " << tok << where().c_str()
+                << " is not valid: give one character in quotes"
+                << " (\",\" \";\"), tab, or whitespace (runs of spaces and"
+                << " tabs)" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    // Header lines
+    headerLines_ = -1;
+    if (dict.found("headerLines"))
+    {
+        headerLines_ = dict.get<label>("headerLines");
+        if (headerLines_ < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'headerLines' = " << headerLines_
+                << where().c_str() << " is outside its valid range [0, inf)"
+                << " (omit it to skip the non-numeric lines at the top)"
+                << nl << exit(FatalIOError);
+        }
+    }
+
+    // Choices
+    auto readChoice = [&]
+    (
+        const word& key,
+        const word& deflt,
+        const wordList& choices
+    ) -> word
+    {
+        const word w = dict.getOrDefault<word>(key, deflt);
+        if (!choices.found(w))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword '" << key << "' = " << w << where().c_str()
+                << " is not one of the valid choices " << choices << nl
+                << exit(FatalIOError);
+        }
+        return w;
+    };
+    timeUnit_ = readChoice("timeUnit", "s", wordList({"s", "min", "h"}));
+    temperatureUnit_ =
+        readChoice("temperatureUnit", "C", wordList({"C", "K"}));
+    beforeStart_ =
+        readChoice("beforeStart", "hold", wordList({"hold", "error"}));
+    afterEnd_ = readChoice("afterEnd", "hold", wordList({"hold", "error"}));
+
+    // Offset [s]
+    timeOffset_ = dict.getOrDefault<scalar>("timeOffset", 0);
+    if (!std::isfinite(timeOffset_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'timeOffset' = " << timeOffset_ << where().c_str()
+            << " is not a finite number of seconds" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::addRow
+(
+    const scalar tau,
+    const scalar theta,
+    const label line,
+    const string& source,
+    const label sourceLine
+)
+{
+    // Where: a line of the file, or a row of the inline table
+    OStringStream at;
+    if (file_.size())
+    {
+        at  << "Line " << line << " of the fire history file";
+    }
+    else
+    {
+        at  << "Row " << line << " of the inline table of the fire history";
+    }
+
+    if (!std::isfinite(tau) || !std::isfinite(theta))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << at.str().c_str() << " has a time (" << tau
+            << ") or temperature (" << theta << ") that is not a finite"
+            << " number" << nl << "    in " << describeSource().c_str()
+            << nl << exit(FatalIOError);
+    }
+
+    const scalar T = kelvin(theta);
+    if (!(T > 0))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << at.str().c_str() << ": temperature " << theta << ' '
+            << temperatureUnit_ << " = " << T << " K is at or below"
+            << " absolute zero (temperatureUnit " << temperatureUnit_
+            << "; is that the unit of the file?)" << nl
+            << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar t = timeFactor()*tau - timeOffset_;
+    const label n = times_.size();
+
+    if (n && !(t > times_[n - 1]))
+    {
+        OStringStream prev;
+        if (file_.size())
+        {
+            prev << "line " << lines_[n - 1];
+        }
+        else
+        {
+            prev << "row " << lines_[n - 1];
+        }
+        const scalar prevTau = (times_[n - 1] + timeOffset_)/timeFactor();
+
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << "Times of the fire history do not increase: "
+            << at.str().c_str() << " has time " << tau << ' ' << timeUnit_
+            << " (t = " << t << " s), "
+            << (t == times_[n - 1] ? "the same as" : "before") << ' '
+            << prev.str().c_str() << " with time " << prevTau << ' '
+            << timeUnit_ << " (t = " << times_[n - 1] << " s)" << nl
+            << "    The times must increase strictly (sort the rows,"
+            << " remove duplicate times)" << nl
+            << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    times_.append(t);
+    temperatures_.append(T);
+    lines_.append(line);
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::readFile
+(
+    const dictionary& dict
+)
+{
+    // The name: a word or a string
+    {
+        ITstream& is = dict.lookup("file");
+        token tok;
+        is.read(tok);
+        if (tok.isWord())
+        {
+            fileEntry_ = tok.wordToken();
+        }
+        else if (tok.isString())
+        {
+            fileEntry_ = tok.stringToken();
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'file' = " << tok << " of boundary condition "
+                << type() << " on patch '" << patch().name()
+                << "' is not a file name (give it in quotes: "
+                << "file \"<constant>/fire.csv\";)" << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    file_ = fileEntry_;
+    file_.expand();
+    if (!file_.isAbsolute())
+    {
+        file_ = db().time().globalPath()/file_;
+    }
+    file_.clean();
+
+    std::ifstream is;
+    if (isFile(file_))
+    {
+        is.open(file_.c_str());
+    }
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Cannot open the fire history file " << file_
+            << " (keyword 'file' \"" << fileEntry_.c_str() << "\""
+            << (isFile(file_) ? ": not readable" : ": no such file")
+            << ")" << nl
+            << "    of boundary condition " << type() << " on patch '"
+            << patch().name() << "' of field " << internalField().name()
+            << nl << exit(FatalIOError);
+    }
+
+    times_.clear();
+    temperatures_.clear();
+    lines_.clear();
+
+    const label nNeeded = max(timeColumn_, temperatureColumn_) + 1;
+
+    std::string line;
+    label lineNo = 0;
+    label nHeader = 0;
+    bool inData = false;
+
+    while (std::getline(is, line))
+    {
+        ++lineNo;
+
+        if (headerLines_ >= 0 && lineNo <= headerLines_)
+        {
+            ++nHeader;
+            continue;
+        }
+        if (skipLine(line))
+        {
+            continue;
+        }
+
+        const std::vector<std::string> fields(splitLine(line, separator_));
+
+        scalar tau = 0, theta = 0;
+        const bool enough = label(fields.size()) >= nNeeded;
+        const bool okTime = enough && parseNumber(fields[timeColumn_], tau);
+        const bool okTemp =
+            enough && parseNumber(fields[temperatureColumn_], theta);
+
+        if (okTime && okTemp)
+        {
+            inData = true;
+            addRow(tau, theta, lineNo, file_, lineNo);
+            continue;
+        }
+
+        if (headerLines_ < 0 && !inData)
+        {
+            // A header line at the top
+            ++nHeader;
+            continue;
+        }
+
+        // A malformed data line
+        OStringStream why;
+        if (!enough)
+        {
+            why << "has " << label(fields.size()) << " column(s), but"
+                << " timeColumn " << timeColumn_ << " and temperatureColumn "
+                << temperatureColumn_ << " need at least " << nNeeded;
+        }
+        else
+        {
+            const label bad = okTime ? temperatureColumn_ : timeColumn_;
+            why << "has " << (okTime ? "a temperature" : "a time")
+                << " (column " << bad << ") '" << fields[bad].c_str()
+                << "' that is " << (fields[bad].empty() ? "empty" : "not a number");
+        }
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
+            << "Line " << lineNo << " of the fire history file "
+            << why.str().c_str() << " (separator "
+            << separatorName().c_str()
+            << (headerLines_ < 0 ? ", header lines detected: " : ", headerLines ")
+            << nHeader << "):" << nl
+            << "    " << showLine(line).c_str() << nl
+            << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    if (is.bad())
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
+            << "Error reading the fire history file after line " << lineNo
+            << nl << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    if (times_.empty())
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "No data row in the fire history file: " << lineNo
+            << " line(s), " << nHeader << " header line(s) "
+            << (headerLines_ < 0 ? "(non-numeric at the top) " : "")
+            << "skipped; a row needs numbers in timeColumn " << timeColumn_
+            << " and temperatureColumn " << temperatureColumn_
+            << " (separator " << separatorName().c_str() << ")" << nl << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    printSummary(nHeader);
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::readTable
+(
+    const dictionary& dict
+)
+{
+    fileEntry_.clear();
+    file_.clear();
+
+    const entry& e = dict.lookupEntry("table", keyType::LITERAL);
+    const label line = e.startLineNumber();
+
+    tableEntry_ = dict.get<List<Tuple2<scalar, scalar>>>("table");
+
+    if (tableEntry_.empty())
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, dictName_, line)
+            << "Empty 'table' of " << describeSource().c_str()
+            << ": give at least one (time temperature) row" << nl
+            << exit(FatalIOError);
+    }
+
+    times_.clear();
+    temperatures_.clear();
+    lines_.clear();
+
+    forAll(tableEntry_, rowi)
+    {
+        addRow
+        (
+            tableEntry_[rowi].first(),
+            tableEntry_[rowi].second(),
+            rowi + 1,
+            dictName_,
+            line
+        );
+    }
+
+    printSummary(0);
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::printSummary
+(
+    const label nHeader
+) const
+{
+    const label n = times_.size();
+    const scalar Tmin = min(temperatures_);
+    const scalar Tmax = max(temperatures_);
+    const scalar off = temperatureUnit_ == "C" ? 273.15 : 0;
+
+    OStringStream os;
+    os.precision(10);
+    os  << "fireTemperature on patch " << patch().name() << " of field "
+        << internalField().name() << ": " << n << " row(s) from ";
+    if (file_.size())
+    {
+        os  << file_ << " (lines " << lines_.first() << " to "
+            << lines_.last() << ", " << nHeader << " header line(s) skipped)";
+    }
+    else
+    {
+        os  << "the inline table";
+    }
+    os  << nl << "    time " << (times_.first() + timeOffset_)/timeFactor()
+        << " to " << (times_.last() + timeOffset_)/timeFactor() << ' '
+        << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
+        << ", t = " << times_.first() << " to " << times_.last()
+        << " s (timeOffset " << timeOffset_ << " s); T = " << Tmin - off
+        << " to " << Tmax - off << ' ' << temperatureUnit_ << " = " << Tmin
+        << " to " << Tmax << " K; before the first time: " << beforeStart_
+        << ", after the last: " << afterEnd_;
+
+    Info<< os.str().c_str() << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    fixedValueFvPatchScalarField(p, iF),
+    fileEntry_(),
+    tableEntry_(),
+    timeColumn_(0),
+    temperatureColumn_(1),
+    separator_(','),
+    headerLines_(-1),
+    timeUnit_("s"),
+    temperatureUnit_("C"),
+    timeOffset_(0),
+    beforeStart_("hold"),
+    afterEnd_("hold"),
+    times_(),
+    temperatures_(),
+    lines_(),
+    file_(),
+    dictName_(iF.objectPath()),
+    dictLine_(-1)
+{}
+
+
+Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    fixedValueFvPatchScalarField(p, iF, dict, false),
+    fileEntry_(),
+    tableEntry_(),
+    timeColumn_(0),
+    temperatureColumn_(1),
+    separator_(','),
+    headerLines_(-1),
+    timeUnit_("s"),
+    temperatureUnit_("C"),
+    timeOffset_(0),
+    beforeStart_("hold"),
+    afterEnd_("hold"),
+    times_(),
+    temperatures_(),
+    lines_(),
+    file_(),
+    dictName_(dict.name()),
+    dictLine_(dict.startLineNumber())
+{
+    readKeywords(dict);
+
+    const bool hasFile = dict.found("file", keyType::LITERAL);
+    const bool hasTable = dict.found("table", keyType::LITERAL);
+
+    if (hasFile == hasTable)
+    {
+        FatalIOErrorInFunction(dict)
+            << (hasFile ? "Both" : "Neither") << " 'file' "
+            << (hasFile ? "and" : "nor") << " 'table' given for boundary"
+            << " condition " << type() << " on patch '" << p.name()
+            << "' of field " << iF.name() << ": give one of them," << nl
+            << "    file  \"<constant>/fire.csv\";   // CSV of time,"
+            << " temperature" << nl
+            << "    table ((0 20) (600 700) ...);   // (time temperature)"
+            << nl << exit(FatalIOError);
+    }
+
+    if (hasFile)
+    {
+        readFile(dict);
+    }
+    else
+    {
+        readTable(dict);
+    }
+
+    // The value at the current time (beforeStart/afterEnd checked: a start
+    // time outside the history with 'error' stops before any time step).
+    // A 'value' entry is not used: the history is the reference.
+    fvPatchScalarField::operator=(temperature(db().time().value()));
+}
+
+
+Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
+(
+    const fireTemperatureFvPatchScalarField& ptf,
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    fixedValueFvPatchScalarField(p, iF),    // not mapped: uniform
+    fileEntry_(ptf.fileEntry_),
+    tableEntry_(ptf.tableEntry_),
+    timeColumn_(ptf.timeColumn_),
+    temperatureColumn_(ptf.temperatureColumn_),
+    separator_(ptf.separator_),
+    headerLines_(ptf.headerLines_),
+    timeUnit_(ptf.timeUnit_),
+    temperatureUnit_(ptf.temperatureUnit_),
+    timeOffset_(ptf.timeOffset_),
+    beforeStart_(ptf.beforeStart_),
+    afterEnd_(ptf.afterEnd_),
+    times_(ptf.times_),
+    temperatures_(ptf.temperatures_),
+    lines_(ptf.lines_),
+    file_(ptf.file_),
+    dictName_(ptf.dictName_),
+    dictLine_(ptf.dictLine_)
+{
+    fvPatchScalarField::operator=(temperature(db().time().value(), false));
+}
+
+
+Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
+(
+    const fireTemperatureFvPatchScalarField& ptf
+)
+:
+    fixedValueFvPatchScalarField(ptf),
+    fileEntry_(ptf.fileEntry_),
+    tableEntry_(ptf.tableEntry_),
+    timeColumn_(ptf.timeColumn_),
+    temperatureColumn_(ptf.temperatureColumn_),
+    separator_(ptf.separator_),
+    headerLines_(ptf.headerLines_),
+    timeUnit_(ptf.timeUnit_),
+    temperatureUnit_(ptf.temperatureUnit_),
+    timeOffset_(ptf.timeOffset_),
+    beforeStart_(ptf.beforeStart_),
+    afterEnd_(ptf.afterEnd_),
+    times_(ptf.times_),
+    temperatures_(ptf.temperatures_),
+    lines_(ptf.lines_),
+    file_(ptf.file_),
+    dictName_(ptf.dictName_),
+    dictLine_(ptf.dictLine_)
+{}
+
+
+Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
+(
+    const fireTemperatureFvPatchScalarField& ptf,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    fixedValueFvPatchScalarField(ptf, iF),
+    fileEntry_(ptf.fileEntry_),
+    tableEntry_(ptf.tableEntry_),
+    timeColumn_(ptf.timeColumn_),
+    temperatureColumn_(ptf.temperatureColumn_),
+    separator_(ptf.separator_),
+    headerLines_(ptf.headerLines_),
+    timeUnit_(ptf.timeUnit_),
+    temperatureUnit_(ptf.temperatureUnit_),
+    timeOffset_(ptf.timeOffset_),
+    beforeStart_(ptf.beforeStart_),
+    afterEnd_(ptf.afterEnd_),
+    times_(ptf.times_),
+    temperatures_(ptf.temperatures_),
+    lines_(ptf.lines_),
+    file_(ptf.file_),
+    dictName_(ptf.dictName_),
+    dictLine_(ptf.dictLine_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
+(
+    const scalar t,
+    const bool check
+) const
+{
+    const label n = times_.size();
+
+    if (!n)
+    {
+        FatalErrorInFunction
+            << "No fire history on patch '" << patch().name() << "'"
+            << exit(FatalError);
+    }
+
+    const bool before = t < times_[0];
+    const bool after = t > times_[n - 1];
+
+    if (check && ((before && beforeStart_ == "error")
+                  || (after && afterEnd_ == "error")))
+    {
+        const label rowi = before ? 0 : n - 1;
+        const string source = file_.size() ? string(file_) : string(dictName_);
+        const label line = file_.size() ? lines_[rowi] : dictLine_;
+
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, line)
+            << "Time t = " << t << " s is "
+            << (before ? "before the start" : "after the end")
+            << " of the fire history, whose " << (before ? "first" : "last")
+            << ' ' << (file_.size() ? "line" : "row") << ' '
+            << lines_[rowi] << " is at " << describeTime(rowi).c_str()
+            << ", and " << (before ? "beforeStart" : "afterEnd")
+            << " is 'error'" << nl
+            << "    (set it to 'hold' to keep the "
+            << (before ? "first" : "last") << " temperature, "
+            << (before ? "or change the startTime or timeOffset"
+                       : "extend the history or reduce endTime")
+            << ")" << nl
+            << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
+
+    if (t <= times_[0])
+    {
+        return temperatures_[0];
+    }
+    if (t >= times_[n - 1])
+    {
+        return temperatures_[n - 1];
+    }
+
+    // times_[i] <= t < times_[i+1]
+    const label i =
+        label(std::upper_bound(times_.cbegin(), times_.cend(), t)
+      - times_.cbegin()) - 1;
+
+    if (t == times_[i])
+    {
+        return temperatures_[i];
+    }
+
+    const scalar s = (t - times_[i])/(times_[i + 1] - times_[i]);
+    return temperatures_[i] + s*(temperatures_[i + 1] - temperatures_[i]);
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::updateCoeffs()
+{
+    if (updated())
+    {
+        return;
+    }
+
+    fvPatchScalarField::operator==(temperature(db().time().value()));
+
+    fixedValueFvPatchScalarField::updateCoeffs();
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::write(Ostream& os) const
+{
+    fvPatchScalarField::write(os);
+
+    // Enough digits to read back what was given
+    const int oldPrecision = os.precision(max(os.precision(), 15));
+
+    if (file_.size())
+    {
+        os.writeEntry("file", fileEntry_);
+        os.writeEntryIfDifferent<label>("timeColumn", 0, timeColumn_);
+        os.writeEntryIfDifferent<label>
+        (
+            "temperatureColumn", 1, temperatureColumn_
+        );
+        if (separator_ == '\0')
+        {
+            os.writeEntry("separator", word("whitespace"));
+        }
+        else if (separator_ == '\t')
+        {
+            os.writeEntry("separator", word("tab"));
+        }
+        else if (separator_ != ',')
+        {
+            os.writeEntry("separator", string(std::string(1, separator_)));
+        }
+        if (headerLines_ >= 0)
+        {
+            os.writeEntry("headerLines", headerLines_);
+        }
+    }
+    else
+    {
+        os.writeEntry("table", tableEntry_);
+    }
+
+    os.writeEntry("timeUnit", timeUnit_);
+    os.writeEntry("temperatureUnit", temperatureUnit_);
+    os.writeEntryIfDifferent<scalar>("timeOffset", 0, timeOffset_);
+    os.writeEntryIfDifferent<word>("beforeStart", "hold", beforeStart_);
+    os.writeEntryIfDifferent<word>("afterEnd", "hold", afterEnd_);
+
+    os.precision(oldPrecision);
+
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchScalarField,
+        fireTemperatureFvPatchScalarField
+    );
+}
+
+// ************************************************************************* //
