@@ -12,8 +12,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -97,7 +99,11 @@ std::vector<std::string> splitLine(const std::string& line, const char sep)
 }
 
 
-// A whole field read as a number (strtod: also nan and inf, caught later)
+// A whole field read as a number (strtod: also nan and inf, caught later).
+// A number beyond the range of double (1e400) gives +-inf, also caught
+// later: strtod raises FE_OVERFLOW for it, which OpenFOAM traps
+// (FOAM_SIGFPE) and would end in a crash with a stack trace instead of an
+// error naming the line, so the traps are held while it reads
 bool parseNumber(const std::string& s, Foam::scalar& x)
 {
     if (s.empty())
@@ -107,7 +113,10 @@ bool parseNumber(const std::string& s, Foam::scalar& x)
     const char* begin = s.c_str();
     char* end = nullptr;
     errno = 0;
+    std::fenv_t fenv;
+    std::feholdexcept(&fenv);
     const double v = std::strtod(begin, &end);
+    std::fesetenv(&fenv);
     if (end == begin || end != begin + s.size())
     {
         return false;
@@ -374,11 +383,18 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
 
     // Offset [s]
     timeOffset_ = dict.getOrDefault<scalar>("timeOffset", 0);
-    if (!std::isfinite(timeOffset_))
+    // (bounded so that the times in s cannot overflow: see addRow)
+    if
+    (
+        !std::isfinite(timeOffset_)
+     || std::abs(timeOffset_) > 0.25*std::numeric_limits<scalar>::max()
+    )
     {
         FatalIOErrorInFunction(dict)
             << "Keyword 'timeOffset' = " << timeOffset_ << where().c_str()
-            << " is not a finite number of seconds" << nl
+            << " is not a finite number of seconds below "
+            << 0.25*std::numeric_limits<scalar>::max() << " in magnitude"
+            << nl
             << exit(FatalIOError);
     }
 }
@@ -409,7 +425,22 @@ void Foam::fireTemperatureFvPatchScalarField::addRow
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
             << at.str().c_str() << " has a time (" << tau
             << ") or temperature (" << theta << ") that is not a finite"
-            << " number" << nl << "    in " << describeSource().c_str()
+            << " number (nan, inf, or beyond the range of double)" << nl
+            << "    in " << describeSource().c_str()
+            << nl << exit(FatalIOError);
+    }
+
+    // A time whose conversion to s (or differences of times) would
+    // overflow, which OpenFOAM traps (a crash instead of this error)
+    // (timeOffset is bounded the same way in readKeywords)
+    const scalar tMax = 0.25*std::numeric_limits<scalar>::max();
+    if (std::abs(tau) > tMax/timeFactor())
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << at.str().c_str() << " has a time (" << tau << ' '
+            << timeUnit_ << ") out of range: times must be below "
+            << tMax << " s in magnitude"
+            << nl << "    in " << describeSource().c_str()
             << nl << exit(FatalIOError);
     }
 
@@ -497,17 +528,23 @@ void Foam::fireTemperatureFvPatchScalarField::readFile
     }
     file_.clean();
 
+    // (A std::ifstream that was never opened is good(): is_open() is the
+    // test of a missing file)
     std::ifstream is;
     if (isFile(file_))
     {
         is.open(file_.c_str());
     }
-    if (!is.good())
+    if (!is.is_open() || !is.good())
     {
         FatalIOErrorInFunction(dict)
             << "Cannot open the fire history file " << file_
             << " (keyword 'file' \"" << fileEntry_.c_str() << "\""
-            << (isFile(file_) ? ": not readable" : ": no such file")
+            << (
+                   isFile(file_) ? ": not readable"
+                 : isDir(file_) ? ": a directory, not a file"
+                 : ": no such file"
+               )
             << ")" << nl
             << "    of boundary condition " << type() << " on patch '"
             << patch().name() << "' of field " << internalField().name()
