@@ -1,0 +1,37 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "gasPermeabilityModel.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::gasPermeabilityModel>
+Foam::gasPermeabilityModel::New(const dictionary& dict)
+{
+    const word modelType
+    (
+        dict.getOrDefault<word>("gasPermeabilityModel", "kozenyCarman")
+    );
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        // "Unknown gasPermeabilityModel type <name>", with the valid choices
+        FatalIOErrorInLookup
+        (
+            dict,
+            "gasPermeabilityModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<gasPermeabilityModel>
+    (
+        cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
+    );
+}
+
+// ************************************************************************* //
