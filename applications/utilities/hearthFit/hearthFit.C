@@ -1,0 +1,949 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    hearthFit
+
+Description
+    Least-squares estimation of case parameters (soil properties, ...) from
+    thermocouple histories, by running the solver itself (issue 5).
+
+    Reads system/hearthFitDict of the case (annotated example: the file
+    hearthFitDict next to this source).  Each parameter names a keyword
+    path in a case dictionary (file + entry, e.g. constant/porousProperties
+    and solid/kappa); the value written is scale*parameter.  The measured
+    histories are a CSV (time_s, one column per sensor, C), as written by
+    the thermocouples function object; the simulated ones are the
+    thermocouples CSV of each forward run
+    (postProcessing/<functionObject>/<startTime>/sensors.csv), linearly
+    interpolated to the measured times inside the time window.  Residuals
+    r = sqrt(weight)*(simulated - measured)/sigma.
+
+    Forward runs: each in its own scratch copy (system, constant, start
+    time) of the case under <workDir>/scratch<k>; the runs of one batch
+    (all finite-difference columns of an iteration) run concurrently up to
+    maxConcurrentRuns.  A run that fails (non-zero exit, no 'End' in its
+    log, missing sensors CSV or a CSV not covering the time window) is a
+    failed evaluation: the optimiser rejects the step.  The user's case is
+    only read; results go to <workDir> (report.txt, fitted.csv,
+    progress.csv); scratch copies are removed at the end (-keepScratch
+    keeps them).  -writeCase DIR writes a copy of the case with the best
+    parameters.
+
+    Optimiser: hearthFit::levenbergMarquardt (leastSquares/).
+
+Usage
+    hearthFit [-case DIR] [-writeCase DIR] [-keepScratch]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "HashTable.H"
+
+#include "levenbergMarquardt.H"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <thread>
+#include <cstdlib>
+#include <sys/wait.h>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * Local Types * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+struct ParameterSpec
+{
+    word name;
+    fileName file;              // relative to the case
+    string entry;               // keyword path, '/'-separated
+    scalar scale = 1;
+};
+
+struct Histories
+{
+    std::vector<double> times;
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> values;   // [sensor][time]
+};
+
+
+std::string quoted(const std::string& s)
+{
+    return "'" + s + "'";
+}
+
+
+std::vector<std::string> splitCsv(const std::string& line)
+{
+    std::vector<std::string> out;
+    std::stringstream ss(line);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        const auto b = item.find_first_not_of(" \t\r");
+        const auto e = item.find_last_not_of(" \t\r");
+        out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
+    }
+    return out;
+}
+
+
+//- Read a CSV: a header (first column time), rows of numbers.
+//  False (with a message) on a problem
+bool readCsv(const std::string& path, Histories& h, std::string& err)
+{
+    std::ifstream is(path);
+    if (!is.good())
+    {
+        err = "cannot open " + path;
+        return false;
+    }
+    std::string line;
+    bool header = false;
+    long lineNo = 0;
+    while (std::getline(is, line))
+    {
+        ++lineNo;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        if (line[line.find_first_not_of(" \t")] == '#') continue;
+        const std::vector<std::string> cols(splitCsv(line));
+        if (!header)
+        {
+            if (cols.size() < 2)
+            {
+                err = path + ": header needs a time and a sensor column";
+                return false;
+            }
+            h.names.assign(cols.begin() + 1, cols.end());
+            h.values.assign(h.names.size(), std::vector<double>());
+            header = true;
+            continue;
+        }
+        if (cols.size() != h.names.size() + 1)
+        {
+            err = path + " line " + std::to_string(lineNo)
+                + ": wrong number of columns";
+            return false;
+        }
+        std::vector<double> v(cols.size());
+        for (size_t i = 0; i < cols.size(); ++i)
+        {
+            char* end = nullptr;
+            v[i] = std::strtod(cols[i].c_str(), &end);
+            if (end == cols[i].c_str() || *end != '\0')
+            {
+                err = path + " line " + std::to_string(lineNo)
+                    + ": not a number '" + cols[i] + "'";
+                return false;
+            }
+        }
+        if (h.times.size() && v[0] <= h.times.back())
+        {
+            // Restarted run: later rows replace earlier ones
+            while (h.times.size() && h.times.back() >= v[0])
+            {
+                h.times.pop_back();
+                for (auto& s : h.values) s.pop_back();
+            }
+        }
+        h.times.push_back(v[0]);
+        for (size_t i = 1; i < v.size(); ++i) h.values[i - 1].push_back(v[i]);
+    }
+    if (!header || h.times.empty())
+    {
+        err = path + ": no data";
+        return false;
+    }
+    return true;
+}
+
+
+//- Linear interpolation; false if t is outside the times
+bool interpolate
+(
+    const std::vector<double>& t,
+    const std::vector<double>& y,
+    const double x,
+    double& v
+)
+{
+    const double tol = 1e-9*std::max(1.0, std::abs(x));
+    if (t.empty() || x < t.front() - tol || x > t.back() + tol) return false;
+    if (t.size() == 1) { v = y[0]; return true; }
+    size_t i = std::upper_bound(t.begin(), t.end(), x) - t.begin();
+    if (i == 0) i = 1;
+    if (i >= t.size()) i = t.size() - 1;
+    const double t0 = t[i - 1], t1 = t[i];
+    const double w = (t1 > t0) ? (x - t0)/(t1 - t0) : 0;
+    v = y[i - 1] + std::min(1.0, std::max(0.0, w))*(y[i] - y[i - 1]);
+    return true;
+}
+
+
+//- The dictionary holding the last keyword of path, or nullptr
+dictionary* parentDict
+(
+    dictionary& dict,
+    const string& path,
+    word& key
+)
+{
+    wordList parts;
+    {
+        std::stringstream ss(path);
+        std::string p;
+        while (std::getline(ss, p, '/'))
+        {
+            if (p.size()) parts.append(word(p));
+        }
+    }
+    if (parts.empty()) return nullptr;
+    dictionary* d = &dict;
+    for (label i = 0; i < parts.size() - 1; ++i)
+    {
+        d = d->subDictPtr(parts[i]);
+        if (!d) return nullptr;
+    }
+    key = parts.last();
+    if (!d->found(key, keyType::LITERAL) || d->isDict(key)) return nullptr;
+    return d;
+}
+
+
+void writeDictFile(const fileName& path, const dictionary& dict)
+{
+    OFstream os(path);
+    os.precision(17);
+    os  << "FoamFile" << nl
+        << "{" << nl
+        << "    version     2.0;" << nl
+        << "    format      ascii;" << nl
+        << "    class       dictionary;" << nl
+        << "    object      " << path.name() << ";" << nl
+        << "}" << nl
+        << "// Written by hearthFit (parameters set)" << nl << nl;
+    dict.write(os, false);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Least-squares fit of case parameters to thermocouple histories"
+        " (system/hearthFitDict)"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::addOption
+    (
+        "writeCase", "dir", "write a copy of the case with the best parameters"
+    );
+    argList::addBoolOption("keepScratch", "keep the scratch copies");
+
+    #include "setRootCase.H"
+
+    Time runTime
+    (
+        Time::controlDictName,
+        args.rootPath(),
+        args.caseName(),
+        word("system"),
+        word("constant"),
+        false
+    );
+
+    // Parameter values are written into dictionaries at full precision
+    // (dictionary::set formats through a string stream)
+    IOstream::defaultPrecision(17);
+
+    const fileName casePath(runTime.path());
+    const word startName(runTime.timeName());
+
+    IOdictionary fitDict
+    (
+        IOobject
+        (
+            "hearthFitDict",
+            runTime.system(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    // ---- Parameters
+    const dictionary& parsDict = fitDict.subDict("parameters");
+    std::vector<hearthFit::FitParameter> fitPars;
+    std::vector<ParameterSpec> specs;
+    HashTable<dictionary> caseDicts;    // by file (relative)
+
+    for (const entry& e : parsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(parsDict)
+                << "parameters: '" << e.keyword() << "' is not a dictionary"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        ParameterSpec s;
+        s.name = e.keyword();
+        s.file = d.get<fileName>("file");
+        s.entry = d.get<fileName>("entry");
+        s.scale = d.lookupOrDefault<scalar>("scale", 1);
+
+        hearthFit::FitParameter p;
+        p.name = s.name;
+        p.initial = d.get<scalar>("initial");
+        p.lower = d.get<scalar>("min");
+        p.upper = d.get<scalar>("max");
+        p.typical = d.lookupOrDefault<scalar>("typical", 0);
+        const word tr(d.lookupOrDefault<word>("transform", "linear"));
+        if (tr == "log") p.transform = hearthFit::Transform::log;
+        else if (tr != "linear")
+        {
+            FatalIOErrorInFunction(d)
+                << "transform " << tr << ": valid are linear, log"
+                << exit(FatalIOError);
+        }
+        if (!(p.lower < p.upper) || p.initial < p.lower || p.initial > p.upper)
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": need min < max and initial"
+                << " within [min, max] (min " << p.lower << ", max "
+                << p.upper << ", initial " << p.initial << ")"
+                << exit(FatalIOError);
+        }
+
+        if (!caseDicts.found(s.file))
+        {
+            IFstream is(casePath/s.file);
+            if (!is.good())
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": cannot read "
+                    << casePath/s.file << exit(FatalIOError);
+            }
+            dictionary cd(is);
+            cd.remove("FoamFile");
+            caseDicts.insert(s.file, cd);
+        }
+        word key;
+        if (!parentDict(caseDicts[s.file], s.entry, key))
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": no keyword path '" << s.entry.c_str()
+                << "' (a non-dictionary entry) in " << casePath/s.file
+                << exit(FatalIOError);
+        }
+        specs.push_back(s);
+        fitPars.push_back(p);
+    }
+    const label nPar = specs.size();
+    if (!nPar)
+    {
+        FatalIOErrorInFunction(parsDict) << "no parameters"
+            << exit(FatalIOError);
+    }
+
+    // ---- Observations
+    const dictionary& obsDict = fitDict.subDict("observations");
+    const fileName obsFile(obsDict.get<fileName>("file").expand());
+    const fileName obsPath(obsFile.isAbsolute() ? obsFile : casePath/obsFile);
+    Histories measured;
+    {
+        std::string err;
+        if (!readCsv(obsPath, measured, err))
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "observations: " << err.c_str() << exit(FatalIOError);
+        }
+    }
+    scalar t0 = -GREAT, t1 = GREAT;
+    if (obsDict.found("timeWindow"))
+    {
+        const Pair<scalar> w(obsDict.get<Pair<scalar>>("timeWindow"));
+        t0 = w.first(); t1 = w.second();
+        if (!(t0 < t1))
+        {
+            FatalIOErrorInFunction(obsDict) << "timeWindow: need start < end"
+                << exit(FatalIOError);
+        }
+    }
+    wordList sensors;
+    if (obsDict.found("sensors"))
+    {
+        sensors = obsDict.get<wordList>("sensors");
+    }
+    else
+    {
+        for (const auto& n : measured.names) sensors.append(word(n));
+    }
+    std::vector<label> measCol(sensors.size(), -1);
+    std::vector<double> sigma(sensors.size(), 1), weight(sensors.size(), 1);
+    const scalar sigmaAll = obsDict.lookupOrDefault<scalar>("sigma", 1);
+    const dictionary* sigmasDict = obsDict.findDict("sigmas");
+    const dictionary* weightsDict = obsDict.findDict("weights");
+    forAll(sensors, si)
+    {
+        for (size_t c = 0; c < measured.names.size(); ++c)
+        {
+            if (measured.names[c] == sensors[si]) measCol[si] = c;
+        }
+        if (measCol[si] < 0)
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "sensor " << sensors[si] << " is not a column of "
+                << obsPath << exit(FatalIOError);
+        }
+        sigma[si] = sigmaAll;
+        if (sigmasDict) sigma[si] =
+            sigmasDict->lookupOrDefault<scalar>(sensors[si], sigmaAll);
+        if (weightsDict) weight[si] =
+            weightsDict->lookupOrDefault<scalar>(sensors[si], 1);
+        if (!(sigma[si] > 0) || !(weight[si] > 0))
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "sensor " << sensors[si] << ": sigma and weight must be"
+                << " > 0" << exit(FatalIOError);
+        }
+    }
+    std::vector<double> obsTimes;
+    std::vector<size_t> obsRows;
+    for (size_t k = 0; k < measured.times.size(); ++k)
+    {
+        if (measured.times[k] >= t0 && measured.times[k] <= t1)
+        {
+            obsTimes.push_back(measured.times[k]);
+            obsRows.push_back(k);
+        }
+    }
+    if (obsTimes.size()*sensors.size() <= size_t(nPar))
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "fewer observations (" << obsTimes.size()*sensors.size()
+            << ") inside the time window than parameters + 1"
+            << exit(FatalIOError);
+    }
+    const scalar endTime = runTime.endTime().value();
+    if (obsTimes.back() > endTime + 1e-9*max(1, mag(endTime))
+     || obsTimes.front() < runTime.startTime().value())
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "observation times [" << obsTimes.front() << ", "
+            << obsTimes.back() << "] outside the simulated window ["
+            << runTime.startTime().value() << ", " << endTime << "]"
+            << exit(FatalIOError);
+    }
+
+    // ---- Forward model
+    const dictionary& fwdDict = fitDict.subDict("forwardModel");
+    const string solver
+    (
+        fwdDict.lookupOrDefault<fileName>("solver", fileName("ahcFoam")).expand()
+    );
+    const label nProcs = fwdDict.lookupOrDefault<label>("nProcs", 1);
+    if (nProcs != 1)
+    {
+        FatalIOErrorInFunction(fwdDict)
+            << "nProcs " << nProcs << ": only serial forward runs (1) are"
+            << " implemented" << exit(FatalIOError);
+    }
+    const label maxConcurrent =
+        max(1, fwdDict.lookupOrDefault<label>("maxConcurrentRuns", 1));
+    const word foName
+    (
+        fwdDict.lookupOrDefault<word>("functionObject", "thermocouples")
+    );
+    {
+        const dictionary* fos = runTime.controlDict().findDict("functions");
+        if (!fos || !fos->findDict(foName))
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "functionObject " << foName << ": no such entry in the"
+                << " functions of " << runTime.controlDict().name()
+                << " (the thermocouples function object whose"
+                << " sensors.csv holds the simulated histories)"
+                << exit(FatalIOError);
+        }
+    }
+    fileName workDir
+    (
+        fwdDict.lookupOrDefault<fileName>
+        (
+            "workDir", fileName("postProcessing/hearthFit")
+        ).expand()
+    );
+    if (!workDir.isAbsolute()) workDir = casePath/workDir;
+    const bool keepScratch = args.found("keepScratch");
+
+    // ---- Method
+    hearthFit::FitOptions opts;
+    const dictionary methodDict
+    (
+        fitDict.found("method") ? fitDict.subDict("method") : dictionary()
+    );
+    {
+        const word type
+        (
+            methodDict.lookupOrDefault<word>("type", "levenbergMarquardt")
+        );
+        if (type == "gaussNewton") opts.method = hearthFit::Method::gaussNewton;
+        else if (type != "levenbergMarquardt")
+        {
+            FatalIOErrorInFunction(methodDict) << "method type " << type
+                << ": valid are levenbergMarquardt, gaussNewton"
+                << exit(FatalIOError);
+        }
+        const word diff(methodDict.lookupOrDefault<word>("difference", "forward"));
+        if (diff == "central") opts.difference = hearthFit::Difference::central;
+        else if (diff != "forward")
+        {
+            FatalIOErrorInFunction(methodDict) << "difference " << diff
+                << ": valid are forward, central" << exit(FatalIOError);
+        }
+        const scalar noise =
+            methodDict.lookupOrDefault<scalar>("solverNoise", 1e-6);
+        opts.hRel = methodDict.lookupOrDefault<scalar>
+        (
+            "relativeStep",
+            hearthFit::levenbergMarquardt::recommendedRelativeStep
+            (
+                noise, opts.difference
+            )
+        );
+        opts.tolStep = methodDict.lookupOrDefault<scalar>("tolStep", 1e-6);
+        opts.tolGradient =
+            methodDict.lookupOrDefault<scalar>("tolGradient", 1e-6);
+        opts.tolCost = methodDict.lookupOrDefault<scalar>("tolCost", 1e-10);
+        opts.maxIterations =
+            methodDict.lookupOrDefault<label>("maxIterations", 30);
+        opts.initialDamping =
+            methodDict.lookupOrDefault<scalar>("initialDamping", 1e-3);
+        opts.confidence =
+            methodDict.lookupOrDefault<scalar>("confidence", 0.95);
+    }
+
+    std::unique_ptr<hearthFit::levenbergMarquardt> lm;
+    try
+    {
+        lm.reset(new hearthFit::levenbergMarquardt(fitPars, opts));
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(fitDict) << e.what() << exit(FatalIOError);
+    }
+
+    // ---- Scratch copies
+    if
+    (
+        workDir.find('\'') != string::npos
+     || casePath.find('\'') != string::npos
+    )
+    {
+        FatalErrorInFunction << "Quotes in paths are not supported"
+            << exit(FatalError);
+    }
+    mkDir(workDir);
+    std::vector<fileName> slots(maxConcurrent);
+    for (label k = 0; k < maxConcurrent; ++k)
+    {
+        slots[k] = workDir/word("scratch" + Foam::name(k));
+        if (isDir(slots[k])) rmDir(slots[k]);
+        if
+        (
+            !mkDir(slots[k])
+         || !cp(casePath/"system", slots[k])
+         || !cp(casePath/"constant", slots[k])
+         || !cp(casePath/startName, slots[k])
+        )
+        {
+            FatalErrorInFunction << "Cannot copy the case " << casePath
+                << " to " << slots[k] << exit(FatalError);
+        }
+    }
+
+    // Write the parameter values into the dictionaries of a case copy
+    auto writeParameters = [&](const fileName& dir, const hearthFit::Vector& p)
+    {
+        HashTable<dictionary> dicts(caseDicts);
+        for (label j = 0; j < nPar; ++j)
+        {
+            word key;
+            dictionary* d = parentDict(dicts[specs[j].file], specs[j].entry, key);
+            d->set(key, specs[j].scale*p(j));
+        }
+        forAllConstIters(dicts, iter)
+        {
+            writeDictFile(dir/iter.key(), iter.val());
+        }
+    };
+
+    const auto clock0 = std::chrono::steady_clock::now();
+    long runs = 0;
+    long failedRuns = 0;
+    const std::string csvRel
+    (
+        "postProcessing/" + foName + "/" + startName + "/sensors.csv"
+    );
+
+    // Residuals of a finished run in slot dir; false: failed
+    auto collect = [&]
+    (
+        const fileName& dir,
+        const int status,
+        hearthFit::Vector& r,
+        std::string& why
+    ) -> bool
+    {
+        if (status != 0)
+        {
+            why =
+                (status > 0 && WIFEXITED(status))
+              ? "exit status " + std::to_string(WEXITSTATUS(status))
+              : "system() status " + std::to_string(status);
+            return false;
+        }
+        {
+            std::ifstream lg(dir/"log.run");
+            std::string line;
+            bool ended = false;
+            while (std::getline(lg, line)) if (line == "End") ended = true;
+            if (!ended) { why = "no 'End' in the log"; return false; }
+        }
+        Histories sim;
+        if (!readCsv(dir/csvRel, sim, why)) return false;
+        r.resize(obsTimes.size()*sensors.size());
+        label n = 0;
+        forAll(sensors, si)
+        {
+            label col = -1;
+            for (size_t c = 0; c < sim.names.size(); ++c)
+            {
+                if (sim.names[c] == sensors[si]) col = c;
+            }
+            if (col < 0)
+            {
+                why = "sensor " + sensors[si] + " not in " + dir/csvRel;
+                return false;
+            }
+            for (size_t k = 0; k < obsTimes.size(); ++k)
+            {
+                double v;
+                if (!interpolate(sim.times, sim.values[col], obsTimes[k], v))
+                {
+                    why = "simulated times do not cover the observations";
+                    return false;
+                }
+                const double m = measured.values[measCol[si]][obsRows[k]];
+                r(n++) = std::sqrt(weight[si])*(v - m)/sigma[si];
+            }
+        }
+        return true;
+    };
+
+    lm->setBatchResidual
+    (
+        [&](std::vector<hearthFit::Evaluation>& batch)
+        {
+            for (size_t b0 = 0; b0 < batch.size(); b0 += maxConcurrent)
+            {
+                const size_t b1 =
+                    std::min(batch.size(), b0 + size_t(maxConcurrent));
+                std::vector<int> status(b1 - b0, -1);
+                // Prepare the copies (serial: OpenFOAM IO)
+                for (size_t b = b0; b < b1; ++b)
+                {
+                    const fileName& dir = slots[b - b0];
+                    for (const instant& t : Time::findTimes(dir))
+                    {
+                        if (t.name() != startName
+                         && t.value() > runTime.startTime().value())
+                        {
+                            rmDir(dir/t.name());
+                        }
+                    }
+                    if (isDir(dir/"postProcessing"))
+                    {
+                        rmDir(dir/"postProcessing");
+                    }
+                    rm(dir/"log.run");
+                    writeParameters(dir, batch[b].parameters);
+                }
+                // Run concurrently
+                std::vector<std::thread> threads;
+                for (size_t b = b0; b < b1; ++b)
+                {
+                    const std::string dir(slots[b - b0]);
+                    int* st = &status[b - b0];
+                    const std::string cmd
+                    (
+                        "cd " + quoted(dir) + " && " + solver + " -case "
+                      + quoted(dir) + " > log.run 2>&1"
+                    );
+                    threads.emplace_back
+                    (
+                        [cmd, st]() { *st = std::system(cmd.c_str()); }
+                    );
+                }
+                for (auto& th : threads) th.join();
+                // Collect
+                for (size_t b = b0; b < b1; ++b)
+                {
+                    ++runs;
+                    std::string why;
+                    batch[b].ok =
+                        collect(slots[b - b0], status[b - b0], batch[b].residuals, why);
+                    if (!batch[b].ok)
+                    {
+                        ++failedRuns;
+                        Info<< "    forward run " << runs << " failed ("
+                            << why.c_str() << "), parameters";
+                        for (label j = 0; j < nPar; ++j)
+                        {
+                            Info<< ' ' << batch[b].parameters(j);
+                        }
+                        Info<< "; log kept as "
+                            << workDir/word("failed." + Foam::name(runs)
+                             + ".log") << endl;
+                        cp(slots[b - b0]/"log.run",
+                           workDir/word("failed." + Foam::name(runs) + ".log"));
+                    }
+                }
+            }
+        }
+    );
+
+    auto elapsed = [&]()
+    {
+        return std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - clock0
+        ).count();
+    };
+
+    OFstream progressCsv(workDir/"progress.csv");
+    progressCsv << "iteration,cost";
+    for (const auto& s : specs) progressCsv << ',' << s.name;
+    progressCsv << ",damping,elapsed_s,runs,event" << nl;
+
+    Info<< "hearthFit: " << nPar << " parameters, " << sensors.size()
+        << " sensors x " << obsTimes.size() << " times = "
+        << sensors.size()*obsTimes.size() << " residuals" << nl
+        << "    solver " << solver << ", up to " << maxConcurrent
+        << " concurrent runs, relative step " << opts.hRel << ", "
+        << (opts.difference == hearthFit::Difference::forward
+            ? "forward" : "central")
+        << " differences" << nl
+        << "    work directory " << workDir << nl << nl
+        << "iter  cost          ";
+    {
+        std::ostringstream os;
+        for (const auto& s : specs) os << std::setw(14) << s.name << ' ';
+        Info<< os.str().c_str();
+    }
+    Info<< "damping     elapsed_s  runs  event" << endl;
+
+    lm->setProgress
+    (
+        [&](const hearthFit::FitProgress& pr)
+        {
+            const double el = elapsed();
+            std::ostringstream os;
+            os  << std::setw(4) << pr.iteration << "  "
+                << std::setw(12) << std::setprecision(6) << pr.cost << "  ";
+            for (label j = 0; j < nPar; ++j)
+            {
+                os << std::setw(14) << std::setprecision(8)
+                   << pr.parameters(j) << ' ';
+            }
+            os  << std::setw(10) << std::setprecision(3) << pr.damping << "  "
+                << std::setw(9) << std::fixed << std::setprecision(1) << el
+                << "  " << std::setw(4) << runs << "  " << pr.event;
+            if (pr.rejected)
+            {
+                os << " (" << pr.rejected << " trial step"
+                   << (pr.rejected > 1 ? "s" : "") << " rejected)";
+            }
+            Info<< os.str().c_str() << endl;
+
+            progressCsv << pr.iteration << ',' << pr.cost;
+            for (label j = 0; j < nPar; ++j) progressCsv << ',' << pr.parameters(j);
+            progressCsv << ',' << pr.damping << ',' << el << ',' << runs
+                << ",\"" << pr.event.c_str() << '"' << endl;
+        }
+    );
+
+    const hearthFit::FitResult res = lm->solve();
+
+    // ---- Report
+    std::ostringstream rep;
+    rep << std::setprecision(8);
+    rep << "hearthFit report" << "\n"
+        << "status: " << hearthFit::statusName(res.status)
+        << (res.converged ? " (converged)" : " (NOT converged)") << ": "
+        << res.message << "\n"
+        << "iterations " << res.iterations << ", forward runs " << runs
+        << " (" << failedRuns << " failed), elapsed "
+        << std::fixed << std::setprecision(1) << elapsed() << " s\n";
+    rep.unsetf(std::ios::floatfield);
+    rep << std::setprecision(8)
+        << "cost (weighted residual sum of squares) " << res.cost
+        << ", residuals " << res.residuals.size() << ", dof " << res.dof
+        << ", s^2 " << res.sigma2 << "\n\n";
+    const int pct = int(std::round(100*opts.confidence));
+    rep << std::setprecision(10) << std::left << std::setw(12) << "parameter" << std::right
+        << std::setw(18) << "estimate" << std::setw(18) << "std error"
+        << std::setw(18) << ("lower " + std::to_string(pct) + "%")
+        << std::setw(18) << ("upper " + std::to_string(pct) + "%")
+        << std::setw(18) << "initial" << "\n";
+    for (label j = 0; j < nPar; ++j)
+    {
+        auto val = [](const hearthFit::Vector& v, label j)
+        {
+            return v.size() > j ? v(j) : std::nan("");
+        };
+        rep << std::left << std::setw(12) << specs[j].name.c_str()
+            << std::right
+            << std::setw(18) << res.parameters(j)
+            << std::setw(18) << val(res.standardErrors, j)
+            << std::setw(18) << val(res.lowerConfidence, j)
+            << std::setw(18) << val(res.upperConfidence, j)
+            << std::setw(18) << fitPars[j].initial
+            << ((res.atBound.size() > size_t(j) && res.atBound[j])
+                ? "  at bound" : "")
+            << "\n";
+    }
+    rep << "\ncorrelation matrix\n";
+    for (label i = 0; i < nPar; ++i)
+    {
+        rep << std::left << std::setw(12) << specs[i].name.c_str() << std::right;
+        for (label j = 0; j < nPar; ++j)
+        {
+            rep << std::setw(12) << std::setprecision(4)
+                << (res.correlation.rows() > i ? res.correlation(i, j)
+                                                : std::nan(""));
+        }
+        rep << "\n";
+    }
+    rep << std::setprecision(6)
+        << "\nsingular values of the scaled Jacobian J diag(|p|):";
+    for (label j = 0; j < res.singularValues.size(); ++j)
+    {
+        rep << ' ' << res.singularValues(j);
+    }
+    rep << "\n\nRMS residual per sensor [C]\n";
+
+    // Fitted histories from the residuals at the best parameters
+    std::vector<std::vector<double>> fitted
+    (
+        sensors.size(), std::vector<double>(obsTimes.size(), std::nan(""))
+    );
+    const bool haveRes =
+        res.residuals.size() == label(obsTimes.size()*sensors.size());
+    forAll(sensors, si)
+    {
+        double ss = 0;
+        for (size_t k = 0; k < obsTimes.size(); ++k)
+        {
+            const double m = measured.values[measCol[si]][obsRows[k]];
+            if (haveRes)
+            {
+                const double r =
+                    res.residuals(si*obsTimes.size() + k)
+                   *sigma[si]/std::sqrt(weight[si]);
+                fitted[si][k] = m + r;
+                ss += r*r;
+            }
+        }
+        rep << "    " << std::left << std::setw(12) << sensors[si].c_str()
+            << std::right << std::setw(14)
+            << (haveRes ? std::sqrt(ss/obsTimes.size()) : std::nan(""))
+            << "\n";
+    }
+
+    Info<< nl << rep.str().c_str() << endl;
+    {
+        std::ofstream os(workDir/"report.txt");
+        os << rep.str();
+    }
+    {
+        std::ofstream os(workDir/"fitted.csv");
+        os << std::setprecision(10) << "time_s";
+        for (const word& s : sensors) os << ',' << s << "_measured," << s << "_fitted";
+        os << "\n";
+        for (size_t k = 0; k < obsTimes.size(); ++k)
+        {
+            os << obsTimes[k];
+            forAll(sensors, si)
+            {
+                os << ',' << measured.values[measCol[si]][obsRows[k]]
+                   << ',' << fitted[si][k];
+            }
+            os << "\n";
+        }
+    }
+    {
+        std::ofstream os(workDir/"parameters.csv");
+        os << std::setprecision(12)
+           << "name,estimate,std_error,lower,upper\n";
+        for (label j = 0; j < nPar; ++j)
+        {
+            os << specs[j].name << ',' << res.parameters(j) << ','
+               << (res.standardErrors.size() > j ? res.standardErrors(j) : std::nan("")) << ','
+               << (res.lowerConfidence.size() > j ? res.lowerConfidence(j) : std::nan("")) << ','
+               << (res.upperConfidence.size() > j ? res.upperConfidence(j) : std::nan(""))
+               << "\n";
+        }
+    }
+    Info<< "Written " << workDir/"report.txt" << ", "
+        << workDir/"fitted.csv" << ", " << workDir/"parameters.csv" << ", "
+        << workDir/"progress.csv" << endl;
+
+    if (args.found("writeCase"))
+    {
+        fileName out(args.get<fileName>("writeCase").expand());
+        if (!out.isAbsolute()) out = cwd()/out;
+        if
+        (
+            !mkDir(out)
+         || !cp(casePath/"system", out)
+         || !cp(casePath/"constant", out)
+         || !cp(casePath/startName, out)
+        )
+        {
+            FatalErrorInFunction << "Cannot write the case copy " << out
+                << exit(FatalError);
+        }
+        writeParameters(out, res.parameters);
+        Info<< "Best parameters written into the case copy " << out << endl;
+    }
+
+    if (!keepScratch)
+    {
+        for (const fileName& s : slots) rmDir(s);
+    }
+
+    Info<< "End" << nl << endl;
+    return res.converged ? 0 : 1;
+}
+
+
+// ************************************************************************* //
