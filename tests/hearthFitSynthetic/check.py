@@ -7,6 +7,14 @@
   intervals, correlation matrix, singular values and RMS per sensor; the
   case was not modified and the scratch copies were removed; the case
   copy written by -writeCase holds the estimates (Cp = rhoCs/1500);
+- plots: sensitivities.csv (time_s, <sensor>_<parameter>: p_j dT/dp_j in
+  C) at the times of fitted.csv, equal to central differences of ahcFoam
+  runs made by the test (run step 2b) within 1e-4 of the largest
+  sensitivity; fitted.png and sensitivities.png are non-empty PNG files;
+- resumed: the noiseless fit stopped after 3 iterations
+  (-maxIterations 3: status maxIterations, state.dict at iteration 3) and
+  resumed (-resume) converges to the uninterrupted estimates within 1e-6
+  (relative); progress.csv continues without repeated iterations;
 - 5 C noise: the truth inside each reported 95 % interval; RMS residual of
   every sensor within 4..6 C;
 - failing runs: at least one forward run failed and the fit still
@@ -79,6 +87,96 @@ c.le('writeCase: |kappa - ks estimate|/ks',
 c.le('writeCase: |porosity - phi estimate|/phi',
      abs(phi - float(p['phi']['estimate']))/0.2, 1e-10)
 c.true('writeCase: mesh copied', os.path.isfile('best/constant/polyMesh/faces'))
+
+# 1b. Plots and sensitivities
+wd = 'exact/postProcessing/hearthFit/'
+names = ('rhoCs', 'ks', 'phi')
+with open(wd + 'sensitivities.csv') as f:
+    sens = list(csv.DictReader(f))
+cols = ['time_s'] + [s + '_' + n for s in sensors for n in names]
+c.true('exact: sensitivities.csv has time_s and <sensor>_<parameter> for '
+       '4 sensors x 3 parameters at the 180 readings of fitted.csv',
+       len(sens) == 180 and list(sens[0].keys()) == cols
+       and all(float(a['time_s']) == float(b['time_s'])
+               for a, b in zip(sens, rows)))
+c.true('exact: sensitivities finite',
+       all(math.isfinite(float(r[k])) for r in sens for k in cols))
+for png in ('fitted.png', 'sensitivities.png'):
+    with open(wd + png, 'rb') as f:
+        head = f.read(8)
+    c.true('exact: %s is a non-empty PNG (%d bytes)'
+           % (png, os.path.getsize(wd + png)),
+           head == b'\x89PNG\r\n\x1a\n' and os.path.getsize(wd + png) > 1000)
+# Independent central differences (run step 2b: ahcFoam at the estimates
+# with each parameter scaled by 1 +- h, h = 0.002^(2/3) the documented step
+# of hearthFit's final central Jacobian): p dT/dp ~ (T+ - T-)/(2h).  The
+# same step is needed: the boiling plateau makes T(p) non-smooth, central
+# differences with h = 1e-3 instead differ by up to 3 % (rhoCs), 6 % (ks),
+# 20 % (phi) of the largest sensitivity near the end of the plateau.  With
+# the same step both compute the same quantity; what differs is the
+# rounding of the CSVs (10 digits of T ~ 1e-7 C over 2h = 0.03: ~1e-5 C),
+# of the parameters written by -writeCase (17 digits) and the solver
+# tolerance (1e-12): tolerance 1e-4 of the largest |p dT/dp| of the
+# parameter over all sensors and times.
+with open('fdStep') as f:
+    step = float(f.read())
+for n in names:
+    fd = {}
+    for sgn in ('plus', 'minus'):
+        with open('fd_%s_%s/histories.csv' % (n, sgn)) as f:
+            fd[sgn] = list(csv.DictReader(f))
+    ok = len(fd['plus']) == 180 and len(fd['minus']) == 180
+    err, big = 0.0, 0.0
+    if ok:
+        for k in range(180):
+            for s in sensors:
+                d = (float(fd['plus'][k][s]) - float(fd['minus'][k][s]))/(2*step)
+                hf = float(sens[k][s + '_' + n])
+                err = max(err, abs(hf - d))
+                big = max(big, abs(d))
+    c.true('exact: central differences of %s at 180 readings' % n, ok)
+    c.le('exact: sensitivities.csv vs independent central difference, '
+         '%s: max |error| %.4g C / max |p dT/dp| %.4g C' % (n, err, big),
+         err/big if big > 0 else 1.0, 1e-4)
+
+# 1c. Interrupted after 3 iterations and resumed
+with open('resumed/interrupted.status') as f:
+    st = int(f.read())
+with open('resumed/report.interrupted') as f:
+    repi = f.read()
+c.true('resumed: the interrupted run stopped on maxIterations after 3 '
+       'iterations, exit status 1 (not converged): %d' % st,
+       'status: maxIterations' in repi
+       and 'iterations 3,' in repi and st == 1)
+with open('resumed/state.interrupted') as f:
+    sti = f.read()
+c.true('resumed: state.dict of the interrupted run at iteration 3 with '
+       'parameters, damping, runs',
+       re.search(r'^iteration\s+3;', sti, re.M) is not None
+       and all(re.search(r'^%s\s+\S+;' % k, sti, re.M)
+               for k in ('damping', 'runs', 'failedRuns', 'elapsed'))
+       and all(re.search(r'^\s+%s\s+\S+;' % k, sti, re.M) for k in truth))
+rep = report('resumed')
+c.true('resumed: converged, report says resumed',
+       '(converged)' in rep and '(resumed)' in rep)
+with open('resumed/log.hearthFit') as f:
+    c.true('resumed: log says "Resuming from ... iteration 3"',
+           re.search(r'Resuming from .*: iteration 3,', f.read())
+           is not None)
+pr, pe = params('resumed'), params('exact')
+for k in truth:
+    c.le('resumed: |%s resumed - uninterrupted|/uninterrupted (%s, %s)'
+         % (k, pr[k]['estimate'], pe[k]['estimate']),
+         abs(float(pr[k]['estimate']) - float(pe[k]['estimate']))
+         / abs(float(pe[k]['estimate'])), 1e-6)
+with open('resumed/postProcessing/hearthFit/progress.csv') as f:
+    progr = list(csv.DictReader(f))
+itr = [int(r['iteration']) for r in progr]
+c.true('resumed: progress.csv continued: iterations 0..%d once each, runs '
+       'increasing' % itr[-1],
+       itr == list(range(len(itr))) and len(itr) > 4
+       and all(int(a['runs']) < int(b['runs'])
+               for a, b in zip(progr, progr[1:])))
 
 # 2. Noise
 p = params('noisy')

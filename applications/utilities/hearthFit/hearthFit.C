@@ -26,14 +26,19 @@ Description
     log, missing sensors CSV or a CSV not covering the time window) is a
     failed evaluation: the optimiser rejects the step.  The user's case is
     only read; results go to <workDir> (report.txt, fitted.csv,
-    progress.csv); scratch copies are removed at the end (-keepScratch
-    keeps them).  -writeCase DIR writes a copy of the case with the best
+    progress.csv, sensitivities.csv: the scaled sensitivities
+    p_j dT/dp_j [C] per sensor from the final Jacobian, and with gnuplot
+    fitted.png and sensitivities.png, script plots.gp; state.dict: the
+    fit state after each accepted iteration, from which -resume restarts
+    an interrupted fit, appending to progress.csv); scratch copies are
+    removed at the end (-keepScratch keeps them).  -writeCase DIR writes a copy of the case with the best
     parameters.
 
     Optimiser: hearthFit::levenbergMarquardt (leastSquares/).
 
 Usage
-    hearthFit [-case DIR] [-writeCase DIR] [-keepScratch]
+    hearthFit [-case DIR] [-writeCase DIR] [-keepScratch] [-resume]
+        [-maxIterations N]
 
 \*---------------------------------------------------------------------------*/
 
@@ -256,6 +261,17 @@ int main(int argc, char *argv[])
         "writeCase", "dir", "write a copy of the case with the best parameters"
     );
     argList::addBoolOption("keepScratch", "keep the scratch copies");
+    argList::addBoolOption
+    (
+        "resume",
+        "resume an interrupted fit from <workDir>/state.dict (the state"
+        " after its last accepted iteration)"
+    );
+    argList::addOption
+    (
+        "maxIterations", "N",
+        "override method/maxIterations (total, counting resumed iterations)"
+    );
 
     #include "setRootCase.H"
 
@@ -541,6 +557,71 @@ int main(int argc, char *argv[])
             methodDict.lookupOrDefault<scalar>("confidence", 0.95);
     }
 
+    if (args.found("maxIterations"))
+    {
+        opts.maxIterations = args.get<label>("maxIterations");
+    }
+
+    // ---- Resume: the state after the last accepted iteration
+    // (parameters, damping, iteration, runs, failed runs, elapsed time),
+    // written by every accepted iteration to <workDir>/state.dict.  The
+    // optimiser restarts from those parameters with that damping (the
+    // damping of the last progress line is the one the next iteration
+    // uses); only More's scaling (the running maximum of the Jacobian
+    // column norms) restarts from the first Jacobian after resuming.
+    const fileName statePath(workDir/"state.dict");
+    const bool resume = args.found("resume");
+    int iterOffset = 0;
+    long runs = 0;
+    long failedRuns = 0;
+    double elapsedOffset = 0;
+    std::vector<double> initial0;   // the initial values of the dict
+    for (const auto& fp : fitPars) initial0.push_back(fp.initial);
+    if (resume)
+    {
+        if (!isFile(statePath))
+        {
+            FatalErrorInFunction << "-resume: no fit state " << statePath
+                << " (it is written after each accepted iteration)"
+                << exit(FatalError);
+        }
+        IFstream is(statePath);
+        const dictionary st(is);
+        const dictionary& sp = st.subDict("parameters");
+        for (label j = 0; j < nPar; ++j)
+        {
+            if (!sp.found(specs[j].name))
+            {
+                FatalIOErrorInFunction(st) << "-resume: parameter "
+                    << specs[j].name << " not in " << statePath
+                    << exit(FatalIOError);
+            }
+            // Keep the step floor of the original start
+            if (fitPars[j].typical == 0)
+            {
+                fitPars[j].typical = std::abs(fitPars[j].initial)/100;
+            }
+            fitPars[j].initial = sp.get<scalar>(specs[j].name);
+        }
+        const scalar damping = st.get<scalar>("damping");
+        if (damping > 0) opts.initialDamping = damping;
+        iterOffset = st.get<label>("iteration");
+        runs = st.get<label>("runs");
+        failedRuns = st.get<label>("failedRuns");
+        elapsedOffset = st.get<scalar>("elapsed");
+        if (opts.maxIterations - iterOffset < 1)
+        {
+            FatalErrorInFunction << "-resume: " << iterOffset
+                << " iterations done, maxIterations " << opts.maxIterations
+                << ": nothing left (raise -maxIterations)"
+                << exit(FatalError);
+        }
+        opts.maxIterations -= iterOffset;
+        Info<< "Resuming from " << statePath << ": iteration "
+            << iterOffset << ", " << runs << " runs so far, damping "
+            << opts.initialDamping << endl;
+    }
+
     std::unique_ptr<hearthFit::levenbergMarquardt> lm;
     try
     {
@@ -562,6 +643,7 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
     mkDir(workDir);
+    if (!resume) rm(statePath);     // a state of an earlier fit
     std::vector<fileName> slots(maxConcurrent);
     for (label k = 0; k < maxConcurrent; ++k)
     {
@@ -597,8 +679,6 @@ int main(int argc, char *argv[])
     };
 
     const auto clock0 = std::chrono::steady_clock::now();
-    long runs = 0;
-    long failedRuns = 0;
     const std::string csvRel
     (
         "postProcessing/" + foName + "/" + startName + "/sensors.csv"
@@ -733,16 +813,52 @@ int main(int argc, char *argv[])
 
     auto elapsed = [&]()
     {
-        return std::chrono::duration<double>
+        return elapsedOffset + std::chrono::duration<double>
         (
             std::chrono::steady_clock::now() - clock0
         ).count();
     };
 
-    OFstream progressCsv(workDir/"progress.csv");
-    progressCsv << "iteration,cost";
-    for (const auto& s : specs) progressCsv << ',' << s.name;
-    progressCsv << ",damping,elapsed_s,runs,event" << nl;
+    std::ofstream progressCsv
+    (
+        workDir/"progress.csv",
+        resume ? std::ios::app : std::ios::trunc
+    );
+    progressCsv << std::setprecision(8);
+    if (!resume)
+    {
+        progressCsv << "iteration,cost";
+        for (const auto& s : specs) progressCsv << ',' << s.name;
+        progressCsv << ",damping,elapsed_s,runs,event" << std::endl;
+    }
+
+    // Fit state after an accepted iteration (see -resume)
+    auto writeState = [&](const hearthFit::FitProgress& pr, int iteration)
+    {
+        const fileName tmp(statePath + ".tmp");
+        {
+            std::ofstream os(tmp);
+            os  << std::setprecision(17)
+                << "FoamFile\n{\n    version 2.0;\n    format ascii;\n"
+                << "    class dictionary;\n    object state;\n}\n\n"
+                << "// hearthFit state after an accepted iteration:"
+                << " hearthFit -resume restarts here\n"
+                << "iteration   " << iteration << ";\n"
+                << "cost        " << pr.cost << ";\n"
+                << "damping     " << pr.damping << ";\n"
+                << "runs        " << runs << ";\n"
+                << "failedRuns  " << failedRuns << ";\n"
+                << "elapsed     " << elapsed() << ";\n"
+                << "parameters\n{\n";
+            for (label j = 0; j < nPar; ++j)
+            {
+                os << "    " << specs[j].name << ' ' << pr.parameters(j)
+                   << ";\n";
+            }
+            os  << "}\n";
+        }
+        Foam::mv(tmp, statePath);
+    };
 
     Info<< "hearthFit: " << nPar << " parameters, " << sensors.size()
         << " sensors x " << obsTimes.size() << " times = "
@@ -766,8 +882,10 @@ int main(int argc, char *argv[])
         [&](const hearthFit::FitProgress& pr)
         {
             const double el = elapsed();
+            const int iteration = pr.iteration + iterOffset;
+            const bool resumedLine = resume && pr.iteration == 0;
             std::ostringstream os;
-            os  << std::setw(4) << pr.iteration << "  "
+            os  << std::setw(4) << iteration << "  "
                 << std::setw(12) << std::setprecision(6) << pr.cost << "  ";
             for (label j = 0; j < nPar; ++j)
             {
@@ -776,7 +894,8 @@ int main(int argc, char *argv[])
             }
             os  << std::setw(10) << std::setprecision(3) << pr.damping << "  "
                 << std::setw(9) << std::fixed << std::setprecision(1) << el
-                << "  " << std::setw(4) << runs << "  " << pr.event;
+                << "  " << std::setw(4) << runs << "  "
+                << (resumedLine ? std::string("resumed") : pr.event);
             if (pr.rejected)
             {
                 os << " (" << pr.rejected << " trial step"
@@ -784,10 +903,15 @@ int main(int argc, char *argv[])
             }
             Info<< os.str().c_str() << endl;
 
-            progressCsv << pr.iteration << ',' << pr.cost;
+            if (resumedLine) return;    // its line is already written
+            progressCsv << iteration << ',' << pr.cost;
             for (label j = 0; j < nPar; ++j) progressCsv << ',' << pr.parameters(j);
             progressCsv << ',' << pr.damping << ',' << el << ',' << runs
-                << ",\"" << pr.event.c_str() << '"' << endl;
+                << ",\"" << pr.event << '"' << std::endl;
+            if (pr.event.compare(0, 8, "accepted") == 0)
+            {
+                writeState(pr, iteration);
+            }
         }
     );
 
@@ -800,7 +924,8 @@ int main(int argc, char *argv[])
         << "status: " << hearthFit::statusName(res.status)
         << (res.converged ? " (converged)" : " (NOT converged)") << ": "
         << res.message << "\n"
-        << "iterations " << res.iterations << ", forward runs " << runs
+        << "iterations " << res.iterations + iterOffset
+        << (resume ? " (resumed)" : "") << ", forward runs " << runs
         << " (" << failedRuns << " failed), elapsed "
         << std::fixed << std::setprecision(1) << elapsed() << " s\n";
     rep.unsetf(std::ios::floatfield);
@@ -826,7 +951,7 @@ int main(int argc, char *argv[])
             << std::setw(18) << val(res.standardErrors, j)
             << std::setw(18) << val(res.lowerConfidence, j)
             << std::setw(18) << val(res.upperConfidence, j)
-            << std::setw(18) << fitPars[j].initial
+            << std::setw(18) << initial0[j]
             << ((res.atBound.size() > size_t(j) && res.atBound[j])
                 ? "  at bound" : "")
             << "\n";
@@ -917,6 +1042,117 @@ int main(int argc, char *argv[])
         << workDir/"fitted.csv" << ", " << workDir/"parameters.csv" << ", "
         << workDir/"progress.csv" << endl;
 
+    // Scaled sensitivities p_j dT/dp_j [C] from the final Jacobian
+    // (dr/dp with r = sqrt(w)(T - m)/sigma: dT/dp = J sigma/sqrt(w))
+    const bool haveJac =
+        res.jacobian.rows() == label(obsTimes.size()*sensors.size())
+     && res.jacobian.cols() == nPar
+     && res.parameters.size() == nPar;
+    if (haveJac)
+    {
+        std::ofstream os(workDir/"sensitivities.csv");
+        os << std::setprecision(10) << "time_s";
+        for (const word& s : sensors)
+        {
+            for (const auto& sp : specs) os << ',' << s << '_' << sp.name;
+        }
+        os << "\n";
+        for (size_t k = 0; k < obsTimes.size(); ++k)
+        {
+            os << obsTimes[k];
+            forAll(sensors, si)
+            {
+                for (label j = 0; j < nPar; ++j)
+                {
+                    os << ','
+                       << res.jacobian(si*obsTimes.size() + k, j)
+                         *sigma[si]/std::sqrt(weight[si])
+                         *res.parameters(j);
+                }
+            }
+            os << "\n";
+        }
+        Info<< "Written " << workDir/"sensitivities.csv" << endl;
+    }
+    else
+    {
+        WarningInFunction
+            << "No final Jacobian: sensitivities.csv/png not written" << endl;
+    }
+
+    // Plots with gnuplot (fitted.png, sensitivities.png); a missing
+    // gnuplot or a failing plot is a warning only
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    {
+        WarningInFunction
+            << "gnuplot not found: fitted.png and sensitivities.png not"
+            << " written" << endl;
+    }
+    else
+    {
+        std::ofstream gp(workDir/"plots.gp");
+        gp  << "set datafile separator ','\n"
+            << "set key outside right\n"
+            << "set grid\n"
+            << "set xlabel 'time [h]'\n"
+            << "set terminal pngcairo size 1000,650\n"
+            << "set output 'fitted.png'\n"
+            << "set title 'hearthFit: measured (points) and fitted (lines)'\n"
+            << "set ylabel 'T [C]'\n"
+            << "plot ";
+        forAll(sensors, si)
+        {
+            gp  << (si ? ", \\\n     " : "")
+                << "'fitted.csv' every ::1 using ($1/3600):" << 2 + 2*si
+                << " with points pt 7 ps 0.5 lc " << si + 1
+                << " title '" << sensors[si] << " measured', "
+                << "'' every ::1 using ($1/3600):" << 3 + 2*si
+                << " with lines lw 2 lc " << si + 1
+                << " title '" << sensors[si] << " fitted'";
+        }
+        gp  << "\nunset output\n";
+        if (haveJac)
+        {
+            gp  << "set output 'sensitivities.png'\n"
+                << "set title 'scaled sensitivities p_j dT/dp_j'\n"
+                << "set ylabel 'p dT/dp [C]'\n"
+                << "plot ";
+            label col = 2;
+            const char* dts[] = {"1", "2", "3", "4", "5"};
+            forAll(sensors, si)
+            {
+                for (label j = 0; j < nPar; ++j, ++col)
+                {
+                    gp  << (col > 2 ? ", \\\n     " : "")
+                        << (col > 2 ? "''" : "'sensitivities.csv'")
+                        << " every ::1 using ($1/3600):" << col
+                        << " with lines lw 2 lc " << j + 1
+                        << " dt " << dts[si % 5]
+                        << " title '" << sensors[si] << " "
+                        << specs[j].name << "'";
+                }
+            }
+            gp  << "\nunset output\n";
+        }
+        gp.close();
+        const std::string cmd
+        (
+            "cd " + quoted(workDir) + " && gnuplot plots.gp > plots.log 2>&1"
+        );
+        if (std::system(cmd.c_str()) != 0)
+        {
+            WarningInFunction
+                << "gnuplot failed (see " << workDir/"plots.log" << ")"
+                << endl;
+        }
+        else
+        {
+            Info<< "Written " << workDir/"fitted.png";
+            if (haveJac) Info<< ", " << workDir/"sensitivities.png";
+            Info<< endl;
+        }
+    }
+
     if (args.found("writeCase"))
     {
         fileName out(args.get<fileName>("writeCase").expand());
@@ -942,6 +1178,10 @@ int main(int argc, char *argv[])
     }
 
     Info<< "End" << nl << endl;
+
+    // The exit status must say whether the fit converged: a plain return
+    // from main is lost (argList's destructor calls Pstream::exit(0))
+    Pstream::exit(res.converged ? 0 : 1);
     return res.converged ? 0 : 1;
 }
 
