@@ -48,6 +48,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "dictionary.H"
+#include "unitChecks.H"
 #include "IStringStream.H"
 #include "surfaceTensionLaw.H"
 #include "saturationPressureLaw.H"
@@ -71,92 +72,6 @@ using namespace Foam;
 
 namespace
 {
-
-label nChecks = 0;
-label nFailed = 0;
-
-void report
-(
-    const bool pass,
-    const std::string& name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol,
-    const char* kind
-)
-{
-    ++nChecks;
-    if (!pass) ++nFailed;
-
-    char line[512];
-    std::snprintf
-    (
-        line, sizeof(line),
-        "%-4s %-60s value %-22.15g expected %-22.15g tol %.1e %s",
-        pass ? "ok" : "FAIL", name.c_str(), value, expected, tol, kind
-    );
-    Info<< line << endl;
-}
-
-//- |value - expected| <= tol |expected|
-void checkRel
-(
-    const std::string& name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol
-)
-{
-    const bool pass =
-        std::isfinite(value)
-     && std::fabs(value - expected) <= tol*std::fabs(expected);
-    report(pass, name, value, expected, tol, "rel");
-}
-
-//- |value - expected| <= tol
-void checkAbs
-(
-    const std::string& name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol
-)
-{
-    const bool pass =
-        std::isfinite(value) && std::fabs(value - expected) <= tol;
-    report(pass, name, value, expected, tol, "abs");
-}
-
-//- A condition; value printed for information, 'expected' is the bound
-void checkTrue
-(
-    const std::string& name,
-    const bool condition,
-    const scalar value,
-    const scalar bound,
-    const char* kind
-)
-{
-    report(condition && std::isfinite(value), name, value, bound, 0, kind);
-}
-
-void section(const char* title)
-{
-    Info<< nl << "-- " << title << endl;
-}
-
-std::string fmt(const char* format, ...)
-__attribute__((format(printf, 1, 2)));
-
-std::string fmt(const char* format, ...)
-{
-    char buf[256];
-    va_list ap;
-    va_start(ap, format);
-    std::vsnprintf(buf, sizeof(buf), format, ap);
-    va_end(ap);
-    return buf;
-}
 
 //- Dictionary from a string
 dictionary dict(const std::string& text)

@@ -33,6 +33,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "dictionary.H"
+#include "unitChecks.H"
 #include "effectiveConductivityModel.H"
 #include "apparentHeatCapacityModel.H"
 #include "phaseProperties.H"
@@ -49,94 +50,6 @@ using namespace Foam;
 
 namespace
 {
-
-label nChecks = 0;
-label nFailed = 0;
-
-void report
-(
-    const bool pass,
-    const char* name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol,
-    const char* kind
-)
-{
-    ++nChecks;
-    if (!pass) ++nFailed;
-
-    char line[512];
-    std::snprintf
-    (
-        line, sizeof(line),
-        "%-4s %-58s value %-22.15g expected %-22.15g tol %.1e %s",
-        pass ? "ok" : "FAIL", name, value, expected, tol, kind
-    );
-    Info<< line << endl;
-}
-
-//- |value - expected| <= tol |expected|
-void checkRel
-(
-    const std::string& name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol
-)
-{
-    const bool pass =
-        std::isfinite(value)
-     && std::fabs(value - expected) <= tol*std::fabs(expected);
-    report(pass, name.c_str(), value, expected, tol, "rel");
-}
-
-//- |value - expected| <= tol
-void checkAbs
-(
-    const std::string& name,
-    const scalar value,
-    const scalar expected,
-    const scalar tol
-)
-{
-    const bool pass =
-        std::isfinite(value) && std::fabs(value - expected) <= tol;
-    report(pass, name.c_str(), value, expected, tol, "abs");
-}
-
-//- value >= bound - tol |bound|
-void checkAtLeast
-(
-    const std::string& name,
-    const scalar value,
-    const scalar bound,
-    const scalar tol
-)
-{
-    const bool pass =
-        std::isfinite(value) && value >= bound - tol*std::fabs(bound);
-    report(pass, name.c_str(), value, bound, tol, ">=");
-}
-
-void section(const char* title)
-{
-    Info<< nl << "-- " << title << endl;
-}
-
-std::string fmt(const char* format, ...)
-__attribute__((format(printf, 1, 2)));
-
-std::string fmt(const char* format, ...)
-{
-    char buf[256];
-    va_list ap;
-    va_start(ap, format);
-    std::vsnprintf(buf, sizeof(buf), format, ap);
-    va_end(ap);
-    return buf;
-}
-
 
 //- Composite Simpson rule of f over [a, b] (b < a allowed) with an even
 //  number of intervals of width at most hMax
