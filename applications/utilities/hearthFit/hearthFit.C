@@ -11,7 +11,10 @@ Description
     Reads system/hearthFitDict of the case (annotated example: the file
     hearthFitDict next to this source).  Each parameter names a keyword
     path in a case dictionary (file + entry, e.g. constant/porousProperties
-    and solid/kappa); the value written is scale*parameter.  The measured
+    and solid/kappa); the value written is scale*parameter.  Or it is an
+    offset of a sensor's position (sensor + component x, y or z): the
+    sensors file of the thermocouples function object is rewritten in
+    each copy with that sensor moved by the offset.  The measured
     histories are a CSV (time_s, one column per sensor, C), as written by
     the thermocouples function object; the simulated ones are the
     thermocouples CSV of each forward run
@@ -58,6 +61,9 @@ Usage
 #include <iomanip>
 #include <sstream>
 #include <thread>
+#include <array>
+#include <iomanip>
+#include <sstream>
 #include <cstdlib>
 #include <sys/wait.h>
 
@@ -74,6 +80,18 @@ struct ParameterSpec
     fileName file;              // relative to the case
     string entry;               // keyword path, '/'-separated
     scalar scale = 1;
+    word sensor;                // sensor offset: the sensor moved
+    label component = -1;       // sensor offset: 0 x, 1 y, 2 z
+};
+
+// The sensors file of the thermocouples function object: its lines, and
+// per sensor line its name and position (other lines kept as they are)
+struct SensorFile
+{
+    fileName rel;               // relative to the case (and a copy)
+    std::vector<std::string> lines;
+    std::vector<std::string> names;     // "" for a line kept as it is
+    std::vector<std::array<double, 3>> xyz;
 };
 
 struct Histories
@@ -321,9 +339,33 @@ int main(int argc, char *argv[])
         const dictionary& d = e.dict();
         ParameterSpec s;
         s.name = e.keyword();
-        s.file = d.get<fileName>("file");
-        s.entry = d.get<fileName>("entry");
-        s.scale = d.lookupOrDefault<scalar>("scale", 1);
+        if (d.found("sensor"))
+        {
+            // An offset [m] of a sensor's position along x, y or z
+            if (d.found("file") || d.found("entry") || d.found("scale"))
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": a sensor offset takes"
+                    << " no file, entry or scale" << exit(FatalIOError);
+            }
+            s.sensor = d.get<word>("sensor");
+            const word comp(d.get<word>("component"));
+            if (comp == "x") s.component = 0;
+            else if (comp == "y") s.component = 1;
+            else if (comp == "z") s.component = 2;
+            else
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": component " << comp
+                    << ": valid are x, y, z" << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            s.file = d.get<fileName>("file");
+            s.entry = d.get<fileName>("entry");
+            s.scale = d.lookupOrDefault<scalar>("scale", 1);
+        }
 
         hearthFit::FitParameter p;
         p.name = s.name;
@@ -346,6 +388,25 @@ int main(int argc, char *argv[])
                 << " within [min, max] (min " << p.lower << ", max "
                 << p.upper << ", initial " << p.initial << ")"
                 << exit(FatalIOError);
+        }
+        if (p.initial == 0 && !(p.typical > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": initial 0 needs a typical"
+                << " > 0 (the finite-difference step floor and scale, e.g."
+                << " 1e-3 for a sensor offset in m)" << exit(FatalIOError);
+        }
+        if (p.typical < 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": typical " << p.typical
+                << " < 0" << exit(FatalIOError);
+        }
+        if (s.component >= 0)
+        {
+            specs.push_back(s);
+            fitPars.push_back(p);
+            continue;
         }
 
         if (!caseDicts.found(s.file))
@@ -498,6 +559,98 @@ int main(int argc, char *argv[])
                 << " (the thermocouples function object whose"
                 << " sensors.csv holds the simulated histories)"
                 << exit(FatalIOError);
+        }
+    }
+
+    // ---- Sensor offsets: the thermocouples sensors file, rewritten in
+    //      each copy with the sensors moved (the user's file untouched)
+    SensorFile sensorFile;
+    bool anyOffset = false;
+    for (const ParameterSpec& s : specs) anyOffset = anyOffset || s.component >= 0;
+    if (anyOffset)
+    {
+        const dictionary& foDict =
+            runTime.controlDict().subDict("functions").subDict(foName);
+        const std::string raw(foDict.get<string>("file"));
+        std::string rel;
+        auto starts = [&](const std::string& pre)
+        {
+            return raw.compare(0, pre.size(), pre) == 0;
+        };
+        if (starts("<system>/")) rel = "system/" + raw.substr(9);
+        else if (starts("<constant>/")) rel = "constant/" + raw.substr(11);
+        else if (starts("<case>/")) rel = raw.substr(7);
+        else if (raw.find_first_of("<$~") == std::string::npos && !starts("/"))
+        {
+            rel = raw;
+        }
+        fileName relName(rel);
+        relName.clean();
+        const wordList parts(relName.components());
+        if
+        (
+            rel.empty() || relName.find("..") != string::npos
+         || parts.size() < 2
+         || (
+                parts[0] != "system" && parts[0] != "constant"
+             && parts[0] != startName
+            )
+        )
+        {
+            FatalIOErrorInFunction(foDict)
+                << "sensor offsets: the file '" << raw.c_str() << "' of the "
+                << foName << " function object must lie in the case's"
+                << " system, constant or " << startName << " directory"
+                << " (given as <system>/..., <constant>/... or relative to"
+                << " the case), the directories copied for each run"
+                << exit(FatalIOError);
+        }
+        sensorFile.rel = relName;
+        std::ifstream in(casePath/relName);
+        if (!in.good())
+        {
+            FatalIOErrorInFunction(foDict) << "sensor offsets: cannot open "
+                << casePath/relName << exit(FatalIOError);
+        }
+        std::string line;
+        while (std::getline(in, line))
+        {
+            sensorFile.lines.push_back(line);
+            std::string name;
+            std::array<double, 3> xyz{{0, 0, 0}};
+            const std::string trimmed
+            (
+                line.substr(0, line.find('#'))
+            );
+            const std::vector<std::string> cols(splitCsv(trimmed));
+            bool ok = cols.size() == 4 && !cols[0].empty();
+            for (size_t i = 1; ok && i < 4; ++i)
+            {
+                char* end = nullptr;
+                xyz[i-1] = std::strtod(cols[i].c_str(), &end);
+                ok = end != cols[i].c_str() && *end == 0;
+            }
+            if (ok) name = cols[0];
+            sensorFile.names.push_back(name);
+            sensorFile.xyz.push_back(xyz);
+        }
+        for (const ParameterSpec& s : specs)
+        {
+            if (s.component < 0) continue;
+            if
+            (
+                std::find
+                (
+                    sensorFile.names.begin(), sensorFile.names.end(),
+                    std::string(s.sensor)
+                ) == sensorFile.names.end()
+            )
+            {
+                FatalIOErrorInFunction(parsDict)
+                    << "parameter " << s.name << ": sensor " << s.sensor
+                    << " is not in the sensors file " << casePath/relName
+                    << exit(FatalIOError);
+            }
         }
     }
     fileName workDir
@@ -666,8 +819,20 @@ int main(int argc, char *argv[])
     auto writeParameters = [&](const fileName& dir, const hearthFit::Vector& p)
     {
         HashTable<dictionary> dicts(caseDicts);
+        std::vector<std::array<double, 3>> xyz(sensorFile.xyz);
         for (label j = 0; j < nPar; ++j)
         {
+            if (specs[j].component >= 0)
+            {
+                for (size_t i = 0; i < xyz.size(); ++i)
+                {
+                    if (sensorFile.names[i] == std::string(specs[j].sensor))
+                    {
+                        xyz[i][specs[j].component] += p(j);
+                    }
+                }
+                continue;
+            }
             word key;
             dictionary* d = parentDict(dicts[specs[j].file], specs[j].entry, key);
             d->set(key, specs[j].scale*p(j));
@@ -675,6 +840,23 @@ int main(int argc, char *argv[])
         forAllConstIters(dicts, iter)
         {
             writeDictFile(dir/iter.key(), iter.val());
+        }
+        if (!sensorFile.rel.empty())
+        {
+            std::ofstream out(dir/sensorFile.rel);
+            out << std::setprecision(17);
+            for (size_t i = 0; i < sensorFile.lines.size(); ++i)
+            {
+                if (sensorFile.names[i].empty())
+                {
+                    out << sensorFile.lines[i] << '\n';
+                }
+                else
+                {
+                    out << sensorFile.names[i] << ", " << xyz[i][0] << ", "
+                        << xyz[i][1] << ", " << xyz[i][2] << '\n';
+                }
+            }
         }
     };
 
