@@ -54,6 +54,7 @@ Usage
 #include "HashTable.H"
 
 #include "levenbergMarquardt.H"
+#include "laloyMassard.H"
 
 #include <chrono>
 #include <cmath>
@@ -285,6 +286,12 @@ int main(int argc, char *argv[])
         "resume an interrupted fit from <workDir>/state.dict (the state"
         " after its last accepted iteration)"
     );
+    argList::addBoolOption
+    (
+        "firstEstimateOnly",
+        "print the Laloy-Massard first estimate (firstEstimate) and stop"
+        " before any forward run"
+    );
     argList::addOption
     (
         "maxIterations", "N",
@@ -327,6 +334,8 @@ int main(int argc, char *argv[])
     std::vector<hearthFit::FitParameter> fitPars;
     std::vector<ParameterSpec> specs;
     HashTable<dictionary> caseDicts;    // by file (relative)
+    std::vector<double> initialFactor;  // initialFrom laloyMassard: factor
+                                        // times the median a (0: none)
 
     for (const entry& e : parsDict)
     {
@@ -366,6 +375,26 @@ int main(int argc, char *argv[])
             s.entry = d.get<fileName>("entry");
             s.scale = d.lookupOrDefault<scalar>("scale", 1);
         }
+
+        double factor = 0;
+        if (d.found("initialFrom"))
+        {
+            const word from(d.get<word>("initialFrom"));
+            if (from != "laloyMassard")
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": initialFrom " << from
+                    << ": valid is laloyMassard" << exit(FatalIOError);
+            }
+            factor = d.lookupOrDefault<scalar>("initialFactor", 1);
+            if (!(factor > 0))
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": initialFactor must be"
+                    << " > 0" << exit(FatalIOError);
+            }
+        }
+        initialFactor.push_back(factor);
 
         hearthFit::FitParameter p;
         p.name = s.name;
@@ -567,7 +596,8 @@ int main(int argc, char *argv[])
     SensorFile sensorFile;
     bool anyOffset = false;
     for (const ParameterSpec& s : specs) anyOffset = anyOffset || s.component >= 0;
-    if (anyOffset)
+    const dictionary* firstDict = fitDict.findDict("firstEstimate");
+    if (anyOffset || firstDict)
     {
         const dictionary& foDict =
             runTime.controlDict().subDict("functions").subDict(foName);
@@ -653,6 +683,137 @@ int main(int argc, char *argv[])
             }
         }
     }
+    // ---- First estimate: Laloy-Massard diffusivity (laloyMassard.H)
+    if (firstDict)
+    {
+        const dictionary& fd = *firstDict;
+        const scalar T0 = fd.get<scalar>("surfaceTemperature");
+        const scalar Ti = fd.get<scalar>("initialTemperature");
+        const scalar zSurf = fd.lookupOrDefault<scalar>("surfaceZ", 0);
+        const scalar tOrigin = fd.lookupOrDefault<scalar>
+        (
+            "timeOrigin", runTime.startTime().value()
+        );
+        const wordList feSensors
+        (
+            fd.found("sensors") ? fd.get<wordList>("sensors") : sensors
+        );
+        if (T0 == Ti)
+        {
+            FatalIOErrorInFunction(fd) << "firstEstimate: surfaceTemperature"
+                << " equals initialTemperature" << exit(FatalIOError);
+        }
+        std::vector<double> tAll, zs, aPer;
+        std::vector<std::vector<double>> Ts;
+        for (size_t k : obsRows) tAll.push_back(measured.times[k] - tOrigin);
+        Info<< nl << "first estimate (Laloy-Massard, Mansour 5.2.2.1: 1-D"
+            << " semi-infinite dry soil, surface at " << T0 << " C from t = "
+            << tOrigin << " s, initially " << Ti << " C; erfc history fit):"
+            << endl;
+        for (const word& sn : feSensors)
+        {
+            label col = -1;
+            for (size_t c = 0; c < measured.names.size(); ++c)
+            {
+                if (measured.names[c] == sn) col = c;
+            }
+            label li = -1;
+            for (size_t i = 0; i < sensorFile.names.size(); ++i)
+            {
+                if (sensorFile.names[i] == std::string(sn)) li = i;
+            }
+            if (col < 0 || li < 0)
+            {
+                FatalIOErrorInFunction(fd) << "firstEstimate: sensor " << sn
+                    << " is not " << (col < 0 ? "a column of " : "in ")
+                    << (col < 0 ? obsPath : casePath/sensorFile.rel)
+                    << exit(FatalIOError);
+            }
+            const double z = std::abs(sensorFile.xyz[li][2] - zSurf);
+            std::vector<double> T;
+            for (size_t k : obsRows) T.push_back(measured.values[col][k]);
+            int nUsed = 0;
+            const double a = hearthFit::laloyMassard::exactEstimate
+            (
+                z, tAll, T, T0, Ti, nUsed
+            );
+            std::ostringstream os;
+            os << std::setprecision(8);
+            os << "    " << std::string(sn) << ": depth " << z << " m, ";
+            if (a > 0)
+            {
+                os << "diffusivity a = " << a << " m2/s (" << nUsed
+                    << " readings)";
+                aPer.push_back(a);
+                zs.push_back(z);
+                Ts.push_back(T);
+            }
+            else
+            {
+                os << "no usable reading (depth 0 or temperatures outside"
+                    << " (Ti, T0))";
+            }
+            Info<< os.str().c_str() << endl;
+        }
+        if (aPer.empty())
+        {
+            FatalIOErrorInFunction(fd) << "firstEstimate: no sensor gives"
+                << " an estimate" << exit(FatalIOError);
+        }
+        const double aMed = hearthFit::laloyMassard::median(aPer);
+        const double aPrinted = hearthFit::laloyMassard::printedRecipe
+        (
+            zs, tAll, Ts, T0, Ti
+        );
+        {
+            std::ostringstream os;
+            os << std::setprecision(8)
+                << "first estimate: diffusivity a = " << aMed
+                << " m2/s (median of " << aPer.size() << " sensors)";
+            if (aPrinted > 0)
+            {
+                os << "; printed recipe (5.6, geometric-mean approximation)"
+                    << " a = " << aPrinted << " m2/s";
+            }
+            Info<< os.str().c_str() << endl;
+        }
+        if (!args.found("resume"))
+        {
+            for (label j = 0; j < nPar; ++j)
+            {
+                if (!(initialFactor[j] > 0)) continue;
+                hearthFit::FitParameter& p = fitPars[j];
+                double v = initialFactor[j]*aMed;
+                if (v < p.lower || v > p.upper)
+                {
+                    const double c = std::min(std::max(v, p.lower), p.upper);
+                    Info<< "    parameter " << specs[j].name << ": "
+                        << initialFactor[j] << " x a = " << v
+                        << " outside [" << p.lower << ", " << p.upper
+                        << "], clipped to " << c << endl;
+                    v = c;
+                }
+                if (p.typical == 0) p.typical = std::abs(p.initial)/100;
+                Info<< "    initial " << specs[j].name << " = "
+                    << initialFactor[j] << " x a = " << v
+                    << " (instead of " << p.initial << ")" << endl;
+                p.initial = v;
+            }
+        }
+        Info<< endl;
+    }
+    if (args.found("firstEstimateOnly"))
+    {
+        if (!firstDict)
+        {
+            FatalIOErrorInFunction(fitDict) << "-firstEstimateOnly: no"
+                << " firstEstimate sub-dictionary" << exit(FatalIOError);
+        }
+        Info<< "End" << nl << endl;
+        Pstream::exit(0);
+        return 0;
+    }
+
     fileName workDir
     (
         fwdDict.lookupOrDefault<fileName>
