@@ -46,6 +46,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "thermocouples.H"
 #include "Time.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
@@ -628,7 +629,7 @@ int main(int argc, char *argv[])
         )
         {
             FatalIOErrorInFunction(foDict)
-                << "sensor offsets: the file '" << raw.c_str() << "' of the "
+                << "sensor offsets and first estimate: the sensor file '" << raw.c_str() << "' of the "
                 << foName << " function object must lie in the case's"
                 << " system, constant or " << startName << " directory"
                 << " (given as <system>/..., <constant>/... or relative to"
@@ -636,33 +637,43 @@ int main(int argc, char *argv[])
                 << exit(FatalIOError);
         }
         sensorFile.rel = relName;
-        std::ifstream in(casePath/relName);
-        if (!in.good())
+
+        // The sensors as the thermocouples function object reads them
+        pointField positions;
+        wordList names;
+        labelList sensorLines;
+        labelList errorLines;
+        List<string> errors;
+        functionObjects::thermocouples::readSensorFile
+        (
+            casePath/relName, positions, names, sensorLines, errorLines,
+            errors
+        );
+        if (!errors.empty())
         {
-            FatalIOErrorInFunction(foDict) << "sensor offsets: cannot open "
-                << casePath/relName << exit(FatalIOError);
+            FatalIOErrorInFunction(foDict)
+                << "sensor file " << casePath/relName
+                << (errorLines[0] > 0 ? " line " : "")
+                << (errorLines[0] > 0 ? Foam::name(errorLines[0]) : word())
+                << ": " << errors[0].c_str() << exit(FatalIOError);
         }
+
+        // Its lines as they are (comments, header), the sensor lines
+        // marked with their sensor, to be rewritten in the copies
+        std::ifstream in(casePath/relName);
         std::string line;
         while (std::getline(in, line))
         {
             sensorFile.lines.push_back(line);
-            std::string name;
-            std::array<double, 3> xyz{{0, 0, 0}};
-            const std::string trimmed
-            (
-                line.substr(0, line.find('#'))
-            );
-            const std::vector<std::string> cols(splitCsv(trimmed));
-            bool ok = cols.size() == 4 && !cols[0].empty();
-            for (size_t i = 1; ok && i < 4; ++i)
-            {
-                char* end = nullptr;
-                xyz[i-1] = std::strtod(cols[i].c_str(), &end);
-                ok = end != cols[i].c_str() && *end == 0;
-            }
-            if (ok) name = cols[0];
-            sensorFile.names.push_back(name);
-            sensorFile.xyz.push_back(xyz);
+            sensorFile.names.push_back(std::string());
+            sensorFile.xyz.push_back(std::array<double, 3>{{0, 0, 0}});
+        }
+        forAll(names, i)
+        {
+            const size_t li = sensorLines[i] - 1;
+            sensorFile.names[li] = names[i];
+            sensorFile.xyz[li] =
+                {{positions[i].x(), positions[i].y(), positions[i].z()}};
         }
         for (const ParameterSpec& s : specs)
         {

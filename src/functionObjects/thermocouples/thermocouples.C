@@ -107,16 +107,17 @@ public:
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * * * //
 
 void Foam::functionObjects::thermocouples::readSensorFile
 (
+    const fileName& file,
     pointField& positions,
     wordList& names,
     labelList& lines,
     labelList& errorLines,
     List<string>& errors
-) const
+)
 {
     // Read on the master, which sends the sensors and the errors on
     if (Pstream::master())
@@ -134,7 +135,7 @@ void Foam::functionObjects::thermocouples::readSensorFile
             errs.append(msg);
         };
 
-        IFstream is(sensorFile_);
+        IFstream is(file);
 
         if (!is.good())
         {
@@ -293,6 +294,8 @@ void Foam::functionObjects::thermocouples::readSensorFile
     Pstream::scatter(errors);
 }
 
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::labelList Foam::functionObjects::thermocouples::locate
 (
@@ -601,7 +604,10 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     labelList lines;
     labelList fileErrorLines;
     List<string> fileErrors;
-    readSensorFile(positions, names, lines, fileErrorLines, fileErrors);
+    readSensorFile
+    (
+        sensorFile_, positions, names, lines, fileErrorLines, fileErrors
+    );
 
     const bool changed =
     (
