@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "porousMedium.H"
+#include "propertyField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -20,26 +21,7 @@ Foam::volScalarField Foam::porousMedium::propertyField
     const dimensionedScalar& uniformValue
 ) const
 {
-    IOobject io
-    (
-        name,
-        mesh_.time().timeName(),
-        mesh_,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE
-    );
-
-    if (io.typeHeaderOk<volScalarField>(true))
-    {
-        Info<< "    " << name << ": cell field from " << io.objectPath()
-            << endl;
-        volScalarField fld(io, mesh_);
-        fld.dimensions().reset(uniformValue.dimensions());
-        return fld;
-    }
-
-    io.readOpt() = IOobject::NO_READ;
-    return volScalarField(io, mesh_, uniformValue);
+    return Foam::propertyField(mesh_, name, uniformValue);
 }
 
 

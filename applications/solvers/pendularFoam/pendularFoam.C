@@ -1,0 +1,100 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    pendularFoam
+
+Description
+    Heat, Darcy flow of the air/vapour mixture, Fick diffusion of the vapour
+    and evaporation/condensation of the pendular water of a granular soil
+    (EWGM report, Canot 2024, §1-2, model A: local Kelvin-Laplace
+    equilibrium of the vapour with the menisci). Conservation laws, per
+    bulk volume (pendularMedium: W, A, E and their closures):
+
+        water   dW/dt + div(F_w) = 0,  F_w = rho_w v_g + j
+        air     dA/dt + div(F_a) = 0,  F_a = rho_a v_g - j
+        energy  dE/dt + div(-k_e grad T + F_a h_a + F_w h_w) = 0
+
+        v_g = -(K_g/mu_g) grad p_g            (Darcy, eq. 10)
+        j   = -tau_s D_wa rho_g grad(rho_w/rho_g)   (Fick, eq. 3)
+
+    Unknowns: T, p_g and the water content W; the liquid fraction alpha_l,
+    the vapour pressure p_w (Kelvin-Laplace) and the air pressure
+    p_a = p_g - p_w follow in each cell. Each step is implicit (backward
+    Euler); the three equations are solved in turn for corrections with
+    approximate Jacobians (total gas mass for p_g, the water at fixed p_g
+    for W, the energy at fixed p_g and W for T) and iterated until every
+    correction is below its tolerance, so that the discrete conservation
+    laws hold with the exact face fluxes: the water and energy balances
+    close to the tolerance. A step that does not converge is cut and
+    retried.
+
+    Boundary conditions (report §2) follow from those of T, p (p_g) and pw:
+        heated and open:      T fixed (table, fireTemperature ...),
+                              p and pw fixed (pw a history if needed);
+        heated and impermeable: T fixed, p and pw zeroGradient;
+        insulated and impermeable: zeroGradient for all three.
+    On an impermeable patch no gas or vapour crosses; on an open one the
+    gas leaving carries the cell's composition and enthalpy, the gas
+    entering the atmosphere's.
+
+    Controls:
+        system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
+                            maxDeltaTemperature, maxDeltaTGrowth
+        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol; }
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pendularMedium.H"
+#include "checkedRead.H"
+#include "andersonAcceleration.H"
+#include "upwind.H"
+#include "gaussConvectionScheme.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Heat, Darcy air/vapour flow, vapour diffusion and pendular water"
+        " (EWGM model A) in a granular soil"
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "readControls.H"
+    #include "createFields.H"
+    #include "createBalances.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "solveStep.H"
+
+        runTime.write();
+
+        if (runTime.writeTime())
+        {
+            #include "reportBalances.H"
+        }
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

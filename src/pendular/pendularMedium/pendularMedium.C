@@ -1,0 +1,306 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "pendularMedium.H"
+#include "propertyField.H"
+#include "checkedRead.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(pendularMedium, 0);
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "pendularProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    porosity_
+    (
+        propertyField
+        (
+            mesh,
+            "porosity",
+            checkedRead::getOrDefault
+            (
+                *this, "porosity", dimless, 0.26, checkedRead::closedOpen(0, 1)
+            )
+        )
+    ),
+    kelvin_(*this),
+    permeability_(gasPermeabilityModel::New(*this)),
+    conductivity_(effectiveConductivityModel::New(*this))
+{
+    const auto positive = checkedRead::positive();
+    const dimensionSet dimCp(dimEnergy/dimMass/dimTemperature);
+    const dimensionSet dimKappa(dimPower/dimLength/dimTemperature);
+    const auto read =
+        [&](const word& key, const dimensionSet& dims, scalar deflt)
+        {
+            return checkedRead::getOrDefault
+            (
+                *this, key, dims, deflt, positive
+            ).value();
+        };
+
+    rhoSolid_ = read("rhoSolid", dimDensity, 2600);
+    CpSolid_ = read("CpSolid", dimCp, 800);
+    kappaSolid_ = read("kappaSolid", dimKappa, 3.0);
+    CpLiquid_ = read("CpLiquid", dimCp, 4200);
+    kappaLiquid_ = read("kappaLiquid", dimKappa, 0.6);
+    kappaGas_ = read("kappaGas", dimKappa, 0.026);
+    CpAir_ = read("CpAir", dimCp, 1005);
+    Ma_ = read("Ma", dimMass/dimMoles, 0.029);
+    CpVapour_ = read("CpVapour", dimCp, 1890);
+    latentHeat_ = read("latentHeat", dimEnergy/dimMass, 2.2e6);
+    latentHeatTemperature_ =
+        read("latentHeatTemperature", dimTemperature, 373.15);
+    vapourDiffusivity_ = read("vapourDiffusivity", dimViscosity, 2e-5);
+    gasViscosity_ = read("gasViscosity", dimDynamicViscosity, 1.22e-5);
+    tortuosity_ =
+        checkedRead::getOrDefault
+        (
+            *this, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
+        ).value();
+    pendularLimit_ =
+        checkedRead::getOrDefault
+        (
+            *this, "pendularLimit", dimless, 0.05,
+            checkedRead::closedOpen(SMALL, 1)
+        ).value();
+
+    checkedRead::check
+    (
+        porosity_.objectPath(), "porosity", porosity_,
+        checkedRead::closedOpen(SMALL, 1)
+    );
+
+    Info<< "Pendular medium: porosity " << gMin(porosity_.primitiveField())
+        << " to " << gMax(porosity_.primitiveField())
+        << ", (rho C)_s " << rhoSolid_*CpSolid_ << " J/(m3 K)"
+        << ", L " << latentHeat_ << " J/kg at " << latentHeatTemperature_
+        << " K, tau_s D_wa " << vapourDiffusivity() << " m2/s"
+        << ", pendular range alpha_l < " << pendularLimit_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::pendularMedium::vapourDensity
+(
+    const scalar alphaL,
+    const scalar T
+) const
+{
+    return Mw()*kelvin_.pw(alphaL, T)/(R()*T);
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydT
+(
+    const scalar alphaL,
+    const scalar T
+) const
+{
+    if (alphaL <= 0)
+    {
+        return 0;
+    }
+    return Mw()/(R()*T)*(kelvin_.dpwdT(alphaL, T) - kelvin_.pw(alphaL, T)/T);
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydTAtFixedW
+(
+    const scalar alphaL,
+    const scalar T,
+    const scalar porosity
+) const
+{
+    // 0 = dW = W_alpha d alpha + phi (1 - alpha) rho_w,T dT
+    const scalar rhoW = vapourDensity(alphaL, T);
+    const scalar rhoWAlpha = dVapourDensitydAlphaL(alphaL, T);
+    return
+        dVapourDensitydT(alphaL, T)
+       *(rhoL() - rhoW)/(rhoL() - rhoW + (1 - alphaL)*rhoWAlpha);
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydAlphaL
+(
+    const scalar alphaL,
+    const scalar T
+) const
+{
+    if (alphaL <= 0)
+    {
+        return 0;
+    }
+    return
+        vapourDensity(alphaL, T)
+       *kelvin_.dLnRelativeHumiditydAlphaL(alphaL, T);
+}
+
+
+Foam::scalar Foam::pendularMedium::waterContent
+(
+    const scalar alphaL,
+    const scalar T,
+    const scalar porosity
+) const
+{
+    return
+        porosity
+       *(alphaL*rhoL() + (1 - alphaL)*vapourDensity(alphaL, T));
+}
+
+
+Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
+(
+    const scalar alphaL,
+    const scalar T,
+    const scalar porosity
+) const
+{
+    return
+        porosity
+       *(
+            rhoL() - vapourDensity(alphaL, T)
+          + (1 - alphaL)*dVapourDensitydAlphaL(alphaL, T)
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::alphaL
+(
+    const scalar W,
+    const scalar T,
+    const scalar porosity,
+    const scalar alphaGuess
+) const
+{
+    if (W <= 0)
+    {
+        return 0;
+    }
+
+    // Bracket [lo, hi] in s = ln(alpha): W(alpha) increases with alpha
+    // from 0 (dry: the vapour vanishes with the menisci) to phi rho_l
+    scalar lo = -700;
+    scalar hi = 0;
+    scalar s =
+        alphaGuess > 0
+      ? std::log(alphaGuess)
+      : std::log(max(W/(porosity*rhoL()), 1e-300));
+    s = min(max(s, lo), hi);
+
+    for (label iter = 0; iter < 200; ++iter)
+    {
+        const scalar alpha = std::exp(s);
+        const scalar g = waterContent(alpha, T, porosity) - W;
+
+        if (mag(g) <= 1e-14*W)
+        {
+            return alpha;
+        }
+        if (g > 0)
+        {
+            hi = s;
+        }
+        else
+        {
+            lo = s;
+        }
+
+        // Newton in s, dg/ds = alpha dW/d alpha; bisection when it leaves
+        // the bracket
+        const scalar dgds = alpha*dWaterContentdAlphaL(alpha, T, porosity);
+        scalar sNew = dgds > 0 ? s - g/dgds : 0.5*(lo + hi);
+        if (!(sNew > lo && sNew < hi))
+        {
+            sNew = 0.5*(lo + hi);
+        }
+        if (mag(sNew - s) < 1e-15*max(mag(s), 1.0) || hi - lo < 1e-14)
+        {
+            return std::exp(sNew);
+        }
+        s = sNew;
+    }
+
+    return std::exp(s);
+}
+
+
+Foam::scalar Foam::pendularMedium::energy
+(
+    const scalar T,
+    const scalar W,
+    const scalar alphaL,
+    const scalar pa,
+    const scalar porosity
+) const
+{
+    // phi alpha rho_l C_l th + phi (1-alpha) rho_w Cp_w th
+    //   = C_l th W + phi (1-alpha) rho_w (Cp_w - C_l) th
+    const scalar th = T - latentHeatTemperature_;
+    const scalar gas = porosity*(1 - alphaL);
+    return
+        ((1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W)*th
+      + gas
+       *(
+            airDensity(pa, T)*CpAir_*th
+          + vapourDensity(alphaL, T)*((CpVapour_ - CpLiquid_)*th + latentHeat_)
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::energyCapacity
+(
+    const scalar T,
+    const scalar W,
+    const scalar alphaL,
+    const scalar pa,
+    const scalar porosity
+) const
+{
+    const scalar th = T - latentHeatTemperature_;
+    const scalar gas = porosity*(1 - alphaL);
+    const scalar rhoA = airDensity(pa, T);
+    const scalar rhoW = vapourDensity(alphaL, T);
+    return
+        (1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W
+      + gas
+       *(
+            rhoA*CpAir_*(1 - th/T)
+          + rhoW*(CpVapour_ - CpLiquid_)
+          + dVapourDensitydTAtFixedW(alphaL, T, porosity)
+           *((CpVapour_ - CpLiquid_)*th + latentHeat_)
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::kappa
+(
+    const scalar alphaL,
+    const scalar porosity
+) const
+{
+    const scalar kappaFluid = alphaL*kappaLiquid_ + (1 - alphaL)*kappaGas_;
+    return conductivity_->kappa(kappaSolid_, kappaFluid, porosity);
+}
+
+// ************************************************************************* //
