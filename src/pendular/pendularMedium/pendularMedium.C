@@ -100,13 +100,69 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::pendularMedium::saturationState
+Foam::pendularMedium::saturation(const scalar T) const
+{
+    return
+    {
+        T,
+        kelvin_.saturationPressure().pSat(T),
+        kelvin_.Vm()*kelvin_.surfaceTension().sigma(T)/(R()*T)
+    };
+}
+
+
+Foam::scalar Foam::pendularMedium::vapourDensity
+(
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    if (alphaL <= 0)
+    {
+        return 0;
+    }
+    return
+        Mw()*sat.pSat
+       *std::exp(sat.kelvinLength*kelvin_.meniscus().K(alphaL))/(R()*sat.T);
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydAlphaL
+(
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    if (alphaL <= 0)
+    {
+        return 0;
+    }
+    return
+        vapourDensity(alphaL, sat)
+       *sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL);
+}
+
+
+Foam::scalar Foam::pendularMedium::waterContent
+(
+    const scalar alphaL,
+    const saturationState& sat,
+    const scalar porosity
+) const
+{
+    return
+        porosity*(alphaL*rhoL() + (1 - alphaL)*vapourDensity(alphaL, sat));
+}
+
+
 Foam::scalar Foam::pendularMedium::vapourDensity
 (
     const scalar alphaL,
     const scalar T
 ) const
 {
-    return Mw()*kelvin_.pw(alphaL, T)/(R()*T);
+    return vapourDensity(alphaL, saturation(T));
 }
 
 
@@ -146,13 +202,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydAlphaL
     const scalar T
 ) const
 {
-    if (alphaL <= 0)
-    {
-        return 0;
-    }
-    return
-        vapourDensity(alphaL, T)
-       *kelvin_.dLnRelativeHumiditydAlphaL(alphaL, T);
+    return dVapourDensitydAlphaL(alphaL, saturation(T));
 }
 
 
@@ -163,9 +213,7 @@ Foam::scalar Foam::pendularMedium::waterContent
     const scalar porosity
 ) const
 {
-    return
-        porosity
-       *(alphaL*rhoL() + (1 - alphaL)*vapourDensity(alphaL, T));
+    return waterContent(alphaL, saturation(T), porosity);
 }
 
 
@@ -188,7 +236,7 @@ Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
 Foam::scalar Foam::pendularMedium::alphaL
 (
     const scalar W,
-    const scalar T,
+    const saturationState& sat,
     const scalar porosity,
     const scalar alphaGuess
 ) const
@@ -211,7 +259,7 @@ Foam::scalar Foam::pendularMedium::alphaL
     for (label iter = 0; iter < 200; ++iter)
     {
         const scalar alpha = std::exp(s);
-        const scalar g = waterContent(alpha, T, porosity) - W;
+        const scalar g = waterContent(alpha, sat, porosity) - W;
 
         if (mag(g) <= 1e-14*W)
         {
@@ -228,7 +276,12 @@ Foam::scalar Foam::pendularMedium::alphaL
 
         // Newton in s, dg/ds = alpha dW/d alpha; bisection when it leaves
         // the bracket
-        const scalar dgds = alpha*dWaterContentdAlphaL(alpha, T, porosity);
+        const scalar dgds =
+            alpha*porosity
+           *(
+                rhoL() - vapourDensity(alpha, sat)
+              + (1 - alpha)*dVapourDensitydAlphaL(alpha, sat)
+            );
         scalar sNew = dgds > 0 ? s - g/dgds : 0.5*(lo + hi);
         if (!(sNew > lo && sNew < hi))
         {
@@ -245,6 +298,18 @@ Foam::scalar Foam::pendularMedium::alphaL
 }
 
 
+Foam::scalar Foam::pendularMedium::alphaL
+(
+    const scalar W,
+    const scalar T,
+    const scalar porosity,
+    const scalar alphaGuess
+) const
+{
+    return alphaL(W, saturation(T), porosity, alphaGuess);
+}
+
+
 Foam::scalar Foam::pendularMedium::energy
 (
     const scalar T,
@@ -254,16 +319,27 @@ Foam::scalar Foam::pendularMedium::energy
     const scalar porosity
 ) const
 {
-    // phi alpha rho_l C_l th + phi (1-alpha) rho_w Cp_w th
-    //   = C_l th W + phi (1-alpha) rho_w (Cp_w - C_l) th
+    return energy(T, W, alphaL, vapourDensity(alphaL, T), pa, porosity);
+}
+
+
+Foam::scalar Foam::pendularMedium::energy
+(
+    const scalar T,
+    const scalar W,
+    const scalar alphaL,
+    const scalar rhoW,
+    const scalar pa,
+    const scalar porosity
+) const
+{
     const scalar th = T - latentHeatTemperature_;
-    const scalar gas = porosity*(1 - alphaL);
     return
         ((1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W)*th
-      + gas
+      + porosity*(1 - alphaL)
        *(
             airDensity(pa, T)*CpAir_*th
-          + vapourDensity(alphaL, T)*((CpVapour_ - CpLiquid_)*th + latentHeat_)
+          + rhoW*((CpVapour_ - CpLiquid_)*th + latentHeat_)
         );
 }
 
