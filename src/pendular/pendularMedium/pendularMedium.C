@@ -76,12 +76,6 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         (
             *this, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
         ).value();
-    pendularLimit_ =
-        checkedRead::getOrDefault
-        (
-            *this, "pendularLimit", dimless, 0.05,
-            checkedRead::closedOpen(SMALL, 1)
-        ).value();
 
     checkedRead::check
     (
@@ -94,7 +88,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         << ", (rho C)_s " << rhoSolid_*CpSolid_ << " J/(m3 K)"
         << ", L " << latentHeat_ << " J/kg at " << latentHeatTemperature_
         << " K, tau_s D_wa " << vapourDiffusivity() << " m2/s"
-        << ", pendular range alpha_l < " << pendularLimit_ << endl;
+        << ", pendular range alpha_l < " << pendularLimit() << endl;
 }
 
 
