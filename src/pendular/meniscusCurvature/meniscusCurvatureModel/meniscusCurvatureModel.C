@@ -171,6 +171,16 @@ Foam::scalar Foam::meniscusCurvatureModel::nonEquilibriumExponent() const
 }
 
 
+Foam::scalar Foam::meniscusCurvatureModel::grainRadius() const
+{
+    FatalErrorInFunction
+        << "The meniscus model " << type() << " gives no grain radius"
+        << " for the non-equilibrium evaporation (model B)" << nl
+        << exit(FatalError);
+    return 0;
+}
+
+
 Foam::tmp<Foam::scalarField>
 Foam::meniscusCurvatureModel::K(const scalarField& alphaL) const
 {
