@@ -38,7 +38,7 @@ for name in ('accurate', 'default'):
     iters = sum(int(x) for x in re.findall(r'iterations = (\d+)', log))
     T = field(os.path.join(d, '3600/T'))
     dT = ['%+.3f' % (interp(z, depth, T) - interp(z, zr, Tr)) for z in (0.01, 0.02, 0.05)]
-    print('  %-34s %8.2f %7d %10d %8.0f  %s' % ('pendularFoam, steps <= %s K' % ('0.5' if name == 'accurate' else '2'),
+    print('  %-34s %8.2f %7d %10d %8.0f  %s' % ('pendularFoam, steps <= %s' % ('0.5 K, 30 s' if name == 'accurate' else '2 K, 600 s'),
                                               float(u) + float(s), steps, iters, float(m)/1024, ' '.join(dT)))
 print('  %-34s %8.2f %7s %10s %8.0f' % ('reference (BDF2, Eigen), N = 500', float(user) + float(sys_),
                                         '-', '-', float(rss)/1024))
