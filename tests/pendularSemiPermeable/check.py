@@ -1,6 +1,6 @@
 """Dry sand (20 C, 10 cm, closed bottom) under a semi-permeable top that
-lets vapour through but no air, the vapour pressure there held at 50 %
-relative humidity (1169.60 Pa). Vapour diffuses in and, as the air cannot
+lets vapour through but no air, the vapour pressure there given by the
+relativeHumidity condition: air at 20 C and 50 % (1169.60 Pa). Vapour diffuses in and, as the air cannot
 leave, adds to its pressure: the final state (after 3000 s, 11 diffusion
 times H^2 phi/(tau_s D_wa)) is exactly known: p_w = 1169.60 Pa everywhere
 and p_g = 101325 + 1169.60 Pa (the air, at the same temperature and volume,

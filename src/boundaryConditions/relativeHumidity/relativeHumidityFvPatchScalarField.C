@@ -1,0 +1,182 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "relativeHumidityFvPatchScalarField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "pendularMedium.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    fixedValueFvPatchScalarField(p, iF),
+    relativeHumidity_(),
+    airTemperature_(),
+    TName_("T")
+{}
+
+
+Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    fixedValueFvPatchScalarField(p, iF, dict, false),
+    relativeHumidity_(Function1<scalar>::New("relativeHumidity", dict)),
+    airTemperature_
+    (
+        dict.found("airTemperature")
+      ? Function1<scalar>::New("airTemperature", dict)
+      : autoPtr<Function1<scalar>>()
+    ),
+    TName_(dict.getOrDefault<word>("T", "T"))
+{
+    const scalar t = db().time().timeOutputValue();
+    const scalar RH = relativeHumidity_->value(t);
+    if (!(RH >= 0 && RH <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Patch " << p.name() << " of field " << iF.name()
+            << ": keyword 'relativeHumidity' = " << RH << " at t = " << t
+            << " s is outside its valid range [0, 1]"
+            << exit(FatalIOError);
+    }
+
+    if (dict.found("value"))
+    {
+        fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchScalarField::operator=(Zero);
+    }
+}
+
+
+Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
+(
+    const relativeHumidityFvPatchScalarField& ptf,
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    fixedValueFvPatchScalarField(ptf, p, iF, mapper),
+    relativeHumidity_(ptf.relativeHumidity_.clone()),
+    airTemperature_
+    (
+        ptf.airTemperature_.valid()
+      ? ptf.airTemperature_.clone()
+      : autoPtr<Function1<scalar>>()
+    ),
+    TName_(ptf.TName_)
+{}
+
+
+Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
+(
+    const relativeHumidityFvPatchScalarField& ptf
+)
+:
+    fixedValueFvPatchScalarField(ptf),
+    relativeHumidity_(ptf.relativeHumidity_.clone()),
+    airTemperature_
+    (
+        ptf.airTemperature_.valid()
+      ? ptf.airTemperature_.clone()
+      : autoPtr<Function1<scalar>>()
+    ),
+    TName_(ptf.TName_)
+{}
+
+
+Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
+(
+    const relativeHumidityFvPatchScalarField& ptf,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    fixedValueFvPatchScalarField(ptf, iF),
+    relativeHumidity_(ptf.relativeHumidity_.clone()),
+    airTemperature_
+    (
+        ptf.airTemperature_.valid()
+      ? ptf.airTemperature_.clone()
+      : autoPtr<Function1<scalar>>()
+    ),
+    TName_(ptf.TName_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
+{
+    if (updated())
+    {
+        return;
+    }
+
+    const scalar t = db().time().timeOutputValue();
+    const scalar RH = relativeHumidity_->value(t);
+    if (!(RH >= 0 && RH <= 1))
+    {
+        FatalErrorInFunction
+            << "Patch " << patch().name() << " of field "
+            << internalField().name() << " (" << internalField().objectPath()
+            << "): keyword 'relativeHumidity' = " << RH << " at t = " << t
+            << " s is outside its valid range [0, 1]"
+            << exit(FatalError);
+    }
+
+    const pendularMedium& medium =
+        db().lookupObject<pendularMedium>("pendularProperties");
+    const fvPatchScalarField& Tp =
+        patch().lookupPatchField<volScalarField, scalar>(TName_);
+
+    scalarField pw(Tp.size());
+    forAll(pw, facei)
+    {
+        const scalar Tair =
+            airTemperature_.valid() ? airTemperature_->value(t) : Tp[facei];
+        pw[facei] = RH*medium.kelvin().saturationPressure().pSat(Tair);
+    }
+    operator==(pw);
+
+    fixedValueFvPatchScalarField::updateCoeffs();
+}
+
+
+void Foam::relativeHumidityFvPatchScalarField::write(Ostream& os) const
+{
+    fvPatchScalarField::write(os);
+    relativeHumidity_->writeData(os);
+    if (airTemperature_.valid())
+    {
+        airTemperature_->writeData(os);
+    }
+    os.writeEntryIfDifferent<word>("T", "T", TName_);
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchScalarField,
+        relativeHumidityFvPatchScalarField
+    );
+}
+
+// ************************************************************************* //
