@@ -25,7 +25,9 @@ Description
     Forward runs: each in its own scratch copy (system, constant, start
     time) of the case under <workDir>/scratch<k>; the runs of one batch
     (all finite-difference columns of an iteration) run concurrently up to
-    maxConcurrentRuns.  A run that fails (non-zero exit, no 'End' in its
+    maxConcurrentRuns; with nProcs N > 1 each copy is decomposed once
+    (decomposePar) and each run is '<mpirun> -np N <solver> -parallel'.
+    A run that fails (non-zero exit, no 'End' in its
     log, missing sensors CSV or a CSV not covering the time window) is a
     failed evaluation: the optimiser rejects the step.  The user's case is
     only read; results go to <workDir> (report.txt, fitted.csv,
@@ -68,6 +70,7 @@ Usage
 #include <sstream>
 #include <cstdlib>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace Foam;
 
@@ -566,12 +569,61 @@ int main(int argc, char *argv[])
     (
         fwdDict.lookupOrDefault<fileName>("solver", fileName("ahcFoam")).expand()
     );
-    const label nProcs = fwdDict.lookupOrDefault<label>("nProcs", 1);
-    if (nProcs != 1)
+    const label nProcs = fwdDict.getOrDefault<label>("nProcs", 1);
+    if (nProcs < 1)
     {
         FatalIOErrorInFunction(fwdDict)
-            << "nProcs " << nProcs << ": only serial forward runs (1) are"
-            << " implemented" << exit(FatalIOError);
+            << "forwardModel: nProcs " << nProcs << ": valid is >= 1"
+            << " (1: serial forward runs, N > 1: each run on N MPI ranks)"
+            << exit(FatalIOError);
+    }
+    // Parallel forward runs: each scratch copy is decomposed (decomposePar,
+    // system/decomposeParDict of the case) and run as
+    // '<mpirun> -np N <solver> -parallel -case <copy>'
+    const string mpirun
+    (
+        fwdDict.getOrDefault<string>
+        (
+            "mpirun",
+            ::geteuid() == 0
+          ? "mpirun --allow-run-as-root --oversubscribe"
+          : "mpirun --oversubscribe"
+        )
+    );
+    if (nProcs > 1)
+    {
+        const std::string launcher(mpirun.substr(0, mpirun.find(' ')));
+        for (const std::string& exe : {launcher, std::string("decomposePar")})
+        {
+            const std::string cmd
+            (
+                "command -v '" + exe + "' > /dev/null 2>&1"
+            );
+            if (exe.empty() || std::system(cmd.c_str()) != 0)
+            {
+                FatalIOErrorInFunction(fwdDict)
+                    << "forwardModel: nProcs " << nProcs << " needs "
+                    << exe.c_str() << ", not found on the PATH (keyword"
+                    << " mpirun: '" << mpirun.c_str() << "')"
+                    << exit(FatalIOError);
+            }
+        }
+        label nDomains = 0;
+        const fileName decFile(casePath/"system"/"decomposeParDict");
+        if (isFile(decFile))
+        {
+            IFstream is(decFile);
+            const dictionary dd(is);
+            nDomains = dd.getOrDefault<label>("numberOfSubdomains", 0);
+        }
+        if (nDomains != nProcs)
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "forwardModel: nProcs " << nProcs << " but " << decFile
+                << " has numberOfSubdomains " << nDomains << " (0: no such"
+                << " file or keyword): valid are 1 (serial) or"
+                << " numberOfSubdomains" << exit(FatalIOError);
+        }
     }
     const label maxConcurrent =
         max(1, fwdDict.lookupOrDefault<label>("maxConcurrentRuns", 1));
@@ -987,6 +1039,44 @@ int main(int argc, char *argv[])
         }
     }
 
+    // Parallel forward runs: the parameters live in dictionaries, which
+    // the ranks read from the copy itself (system, constant) and the
+    // sensors file too, so a copy is decomposed once (mesh and start-time
+    // fields); only a parameter in a file of the start-time directory
+    // needs a decomposition before every run
+    bool decomposeEachRun = false;
+    for (const ParameterSpec& s : specs)
+    {
+        if (s.component < 0 && s.file.components()[0] == startName)
+        {
+            decomposeEachRun = true;
+        }
+    }
+    auto decompose = [&](const fileName& dir) -> bool
+    {
+        const std::string cmd
+        (
+            "decomposePar -force -case " + quoted(dir)
+          + " > " + quoted(dir/"log.decomposePar") + " 2>&1"
+        );
+        return std::system(cmd.c_str()) == 0;
+    };
+    if (nProcs > 1)
+    {
+        for (const fileName& dir : slots)
+        {
+            if (!decompose(dir))
+            {
+                FatalErrorInFunction << "decomposePar failed on the scratch"
+                    << " copy " << dir << ": see " << dir/"log.decomposePar"
+                    << exit(FatalError);
+            }
+        }
+        Info<< "Scratch copies decomposed for " << nProcs << " ranks"
+            << (decomposeEachRun ? " (again before each run: a parameter"
+                " lives in the start-time directory)" : "") << endl;
+    }
+
     // Write the parameter values into the dictionaries of a case copy
     auto writeParameters = [&](const fileName& dir, const hearthFit::Vector& p)
     {
@@ -1047,6 +1137,11 @@ int main(int argc, char *argv[])
         std::string& why
     ) -> bool
     {
+        if (status == -1000)
+        {
+            why = "decomposePar failed (see " + dir/"log.decomposePar" + ")";
+            return false;
+        }
         if (status != 0)
         {
             why =
@@ -1093,25 +1188,39 @@ int main(int argc, char *argv[])
         return true;
     };
 
+    // Wall time in forward runs (this session): batches of 2 or more runs
+    // (Jacobian columns) and single runs (trial steps), for the report
+    double batchWall[2] = {0, 0};
+    long batchRuns[2] = {0, 0};
     lm->setBatchResidual
     (
         [&](std::vector<hearthFit::Evaluation>& batch)
         {
+            const auto tBatch = std::chrono::steady_clock::now();
             for (size_t b0 = 0; b0 < batch.size(); b0 += maxConcurrent)
             {
                 const size_t b1 =
                     std::min(batch.size(), b0 + size_t(maxConcurrent));
                 std::vector<int> status(b1 - b0, -1);
+                const int decomposeFailed = -1000;
                 // Prepare the copies (serial: OpenFOAM IO)
                 for (size_t b = b0; b < b1; ++b)
                 {
                     const fileName& dir = slots[b - b0];
-                    for (const instant& t : Time::findTimes(dir))
+                    fileNameList dirs(1, dir);
+                    for (label proci = 0; nProcs > 1 && proci < nProcs; ++proci)
                     {
-                        if (t.name() != startName
-                         && t.value() > runTime.startTime().value())
+                        dirs.append(dir/word("processor" + Foam::name(proci)));
+                    }
+                    for (const fileName& d : dirs)
+                    {
+                        for (const instant& t : Time::findTimes(d))
                         {
-                            rmDir(dir/t.name());
+                            if (t.name() != startName
+                             && t.value() > runTime.startTime().value())
+                            {
+                                rmDir(d/t.name());
+                            }
                         }
                     }
                     if (isDir(dir/"postProcessing"))
@@ -1120,6 +1229,10 @@ int main(int argc, char *argv[])
                     }
                     rm(dir/"log.run");
                     writeParameters(dir, batch[b].parameters);
+                    if (nProcs > 1 && decomposeEachRun && !decompose(dir))
+                    {
+                        status[b - b0] = decomposeFailed;
+                    }
                 }
                 // Run concurrently
                 std::vector<std::thread> threads;
@@ -1127,10 +1240,17 @@ int main(int argc, char *argv[])
                 {
                     const std::string dir(slots[b - b0]);
                     int* st = &status[b - b0];
+                    if (*st == decomposeFailed) continue;
                     const std::string cmd
                     (
-                        "cd " + quoted(dir) + " && " + solver + " -case "
-                      + quoted(dir) + " > log.run 2>&1"
+                        "cd " + quoted(dir) + " && "
+                      + (
+                            nProcs > 1
+                          ? mpirun + " -np " + std::to_string(nProcs) + " "
+                          + solver + " -parallel"
+                          : std::string(solver)
+                        )
+                      + " -case " + quoted(dir) + " > log.run 2>&1"
                     );
                     threads.emplace_back
                     (
@@ -1162,6 +1282,12 @@ int main(int argc, char *argv[])
                     }
                 }
             }
+            const int kind = batch.size() > 1 ? 0 : 1;
+            batchWall[kind] += std::chrono::duration<double>
+            (
+                std::chrono::steady_clock::now() - tBatch
+            ).count();
+            batchRuns[kind] += batch.size();
         }
     );
 
@@ -1217,7 +1343,9 @@ int main(int argc, char *argv[])
     Info<< "hearthFit: " << nPar << " parameters, " << sensors.size()
         << " sensors x " << obsTimes.size() << " times = "
         << sensors.size()*obsTimes.size() << " residuals" << nl
-        << "    solver " << solver << ", up to " << maxConcurrent
+        << "    solver " << solver;
+    if (nProcs > 1) Info<< " on " << nProcs << " ranks (" << mpirun << ")";
+    Info<< ", up to " << maxConcurrent
         << " concurrent runs, relative step " << opts.hRel << ", "
         << (opts.difference == hearthFit::Difference::forward
             ? "forward" : "central")
@@ -1281,7 +1409,12 @@ int main(int argc, char *argv[])
         << "iterations " << res.iterations + iterOffset
         << (resume ? " (resumed)" : "") << ", forward runs " << runs
         << " (" << failedRuns << " failed), elapsed "
-        << std::fixed << std::setprecision(1) << elapsed() << " s\n";
+        << std::fixed << std::setprecision(1) << elapsed() << " s\n"
+        << "wall time in forward runs" << (resume ? " (since resumed)" : "")
+        << ": " << batchWall[0] << " s for " << batchRuns[0]
+        << " runs in batches (Jacobians, up to " << maxConcurrent
+        << " at once), " << batchWall[1] << " s for " << batchRuns[1]
+        << " single runs (trial steps)\n";
     rep.unsetf(std::ios::floatfield);
     rep << std::setprecision(8)
         << "cost (weighted residual sum of squares) " << res.cost
@@ -1449,7 +1582,7 @@ int main(int argc, char *argv[])
             << "set key outside right\n"
             << "set grid\n"
             << "set xlabel 'time [h]'\n"
-            << "set terminal pngcairo size 1000,650\n"
+            << "set terminal pngcairo noenhanced size 1000,650\n"
             << "set output 'fitted.png'\n"
             << "set title 'hearthFit: measured (points) and fitted (lines)'\n"
             << "set ylabel 'T [C]'\n"
@@ -1473,17 +1606,27 @@ int main(int argc, char *argv[])
                 << "plot ";
             label col = 2;
             const char* dts[] = {"1", "2", "3", "4", "5"};
+            bool first = true;
             forAll(sensors, si)
             {
                 for (label j = 0; j < nPar; ++j, ++col)
                 {
-                    gp  << (col > 2 ? ", \\\n     " : "")
-                        << (col > 2 ? "''" : "'sensitivities.csv'")
+                    // Curves identically zero (the offset of another
+                    // sensor) are left out of the plot (not of the CSV)
+                    bool zero = true;
+                    for (size_t k = 0; zero && k < obsTimes.size(); ++k)
+                    {
+                        zero = res.jacobian(si*obsTimes.size() + k, j) == 0;
+                    }
+                    if (zero) continue;
+                    gp  << (!first ? ", \\\n     " : "")
+                        << (!first ? "''" : "'sensitivities.csv'")
                         << " every ::1 using ($1/3600):" << col
                         << " with lines lw 2 lc " << j + 1
                         << " dt " << dts[si % 5]
                         << " title '" << sensors[si] << " "
                         << specs[j].name << "'";
+                    first = false;
                 }
             }
             gp  << "\nunset output\n";
