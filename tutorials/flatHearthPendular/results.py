@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""flatHearthPendular: CSV files and a summary of the two runs.
+
+Run in the tutorial directory after both solvers (called by ./Allrun):
+
+    python3 results.py [WALL_PENDULAR WALL_CONDUCTION NPROCS]
+
+Reads, for CASE in pendular (pendularFoam) and conduction (ahcFoam),
+    CASE/postProcessing/thermocouples/0/sensors.csv   T [C] every step
+    CASE/postProcessing/axisProfile/<t>/axis_*.xy     fields down the axis
+    CASE/log.*Foam                                    water balance
+and writes sensors_pendular.csv, sensors_conduction.csv (copies),
+sensors_difference.csv (T of pendularFoam - T of ahcFoam, K) and prints the
+summary (results.txt). Standard library only.
+"""
+
+import glob
+import os
+import re
+import sys
+
+SECTOR = 360.0/5.0      # the 5-degree wedge: x 72 for the whole hearth
+PHI, ALPHA0, RHOL = 0.26, 0.01, 1000.0
+W0 = PHI*ALPHA0*RHOL    # initial liquid water, kg/m3
+
+
+def read_csv(path):
+    with open(path) as f:
+        names = f.readline().strip().split(',')[1:]
+        rows = [[float(x) for x in line.split(',')] for line in f
+                if line.strip()]
+    return names, rows
+
+
+def first_time(rows, col, level):
+    """First time [s] at which sensor col reaches level [C], interpolated"""
+    prev = None
+    for r in rows:
+        if r[col] >= level:
+            if prev is None or prev[col] >= level:
+                return r[0]
+            f = (level - prev[col])/(r[col] - prev[col])
+            return prev[0] + f*(r[0] - prev[0])
+        prev = r
+    return None
+
+
+def value_at(rows, col, t):
+    for a, b in zip(rows, rows[1:]):
+        if a[0] <= t <= b[0]:
+            f = (t - a[0])/(b[0] - a[0]) if b[0] > a[0] else 0
+            return a[col] + f*(b[col] - a[col])
+    return rows[-1][col]
+
+
+def axis_profile(case):
+    """Last write time, {field: [(depth_cm, value)]} down the axis"""
+    dirs = glob.glob(os.path.join(case, 'postProcessing/axisProfile/*'))
+    t = max(dirs, key=lambda d: float(os.path.basename(d)))
+    path = glob.glob(os.path.join(t, 'axis_*.xy'))[0]
+    fields = os.path.basename(path)[5:-3].split('_')
+    prof = {f: [] for f in fields}
+    with open(path) as fh:
+        for line in fh:
+            v = [float(x) for x in line.split()]
+            for f, x in zip(fields, v[1:]):
+                prof[f].append((-100*v[0], x))
+    return float(os.path.basename(t)), prof
+
+
+def crossing(profile, level, from_above=True):
+    """Depth [cm] where a profile (top down) first falls below level"""
+    for (z0, a), (z1, b) in zip(profile, profile[1:]):
+        if (a >= level > b) if from_above else (a <= level < b):
+            return z0 + (level - a)/(b - a)*(z1 - z0)
+    return None
+
+
+def water_balance(log):
+    """Last water balance of pendularFoam: {patch: kg out}, stored change"""
+    out, stored = {}, None
+    with open(log) as f:
+        text = f.read()
+    blocks = text.split('Water balance at t = ')
+    if len(blocks) < 2:
+        return out, stored
+    last = blocks[-1].split('Air balance')[0]
+    for m in re.finditer(r'out through (\S+) = (\S+)', last):
+        if not m.group(1).startswith('proc'):
+            out[m.group(1)] = float(m.group(2))
+    m = re.search(r'stored change\s+= (\S+)', last)
+    stored = float(m.group(1)) if m else None
+    return out, stored
+
+
+def fmt_h(t):
+    return '%.1f min' % (t/60) if t is not None else '-'
+
+
+def main():
+    walls = sys.argv[1:4]
+    names, pend = read_csv('pendular/postProcessing/thermocouples/0/sensors.csv')
+    names_c, cond = read_csv('conduction/postProcessing/thermocouples/0/sensors.csv')
+    assert names == names_c, 'different sensors in the two cases'
+    for case, rows in (('pendular', pend), ('conduction', cond)):
+        with open('sensors_%s.csv' % case, 'w') as f:
+            f.write('time_s,' + ','.join(names) + '\n')
+            for r in rows:
+                f.write(','.join('%.8g' % x for x in r) + '\n')
+    tEnd = min(pend[-1][0], cond[-1][0])
+    # T(pendular) - T(ahc) at the times of pendularFoam
+    with open('sensors_difference.csv', 'w') as f:
+        f.write('time_s,' + ','.join(names) + '\n')
+        for r in pend:
+            if r[0] <= tEnd:
+                f.write(','.join(['%.8g' % r[0]] + [
+                    '%.6g' % (r[i] - value_at(cond, i, r[0]))
+                    for i in range(1, len(names) + 1)]) + '\n')
+
+    out = []
+    p = out.append
+    p('flatHearthPendular: 300 C hot plate (r < 15 cm) for %.1f h on sand'
+      % (tEnd/3600))
+    p('(phi = 0.26, alpha_l = %.3f: %.1f kg/m3 of water), pendularFoam'
+      ' vs ahcFoam' % (ALPHA0, W0))
+    if walls:
+        p('wall time: pendularFoam %s s, ahcFoam %s s (%s rank(s))'
+          % tuple(walls))
+    p('')
+    p('Sensors: t(95 C), t(105 C), time between (the "100 C plateau"),'
+      ' T at the end')
+    p('%-17s %-10s %10s %10s %10s %9s' % ('sensor', 'model', 't95', 't105',
+                                          'plateau', 'T_end'))
+    for i, n in enumerate(names, start=1):
+        for model, rows in (('pendular', pend), ('ahc', cond)):
+            t95 = first_time(rows, i, 95.0)
+            t105 = first_time(rows, i, 105.0)
+            plateau = ('%6.1f min' % ((t105 - t95)/60)
+                       if t95 is not None and t105 is not None else '-')
+            p('%-17s %-10s %10s %10s %10s %7.1f C'
+              % (n, model, fmt_h(t95), fmt_h(t105), plateau,
+                 value_at(rows, i, tEnd)))
+    p('')
+    p('T(pendular) - T(ahc) at each sensor: largest and smallest, when, and'
+      ' the pendular T then')
+    for i, n in enumerate(names, start=1):
+        d = [(r[i] - value_at(cond, i, r[0]), r[0], r[i]) for r in pend]
+        hi, lo = max(d), min(d)
+        p('  %-17s %+6.2f K at %5.2f h (%5.1f C)   %+6.2f K at %5.2f h'
+          ' (%5.1f C)' % (n, hi[0], hi[1]/3600, hi[2], lo[0], lo[1]/3600,
+                          lo[2]))
+    p('')
+
+    # Down the axis at the last write time
+    tp, prof = axis_profile('pendular')
+    tc, profc = axis_profile('conduction')
+    TpC = [(z, T - 273.15) for z, T in prof['T']]
+    TcC = [(z, T - 273.15) for z, T in profc['T']]
+    p('Down the axis at t = %.1f h:' % (tp/3600))
+    p('  depth of 100 C: pendular %.2f cm, ahc %.2f cm'
+      % (crossing(TpC, 100.0), crossing(TcC, 100.0)))
+    alpha = prof['alphaL']
+    zmax, amax = max(alpha, key=lambda x: x[1])
+    dry = crossing(alpha, 0.5*ALPHA0, from_above=False)
+    dryc = None
+    if 'liquidWater' in profc:
+        lw = profc['liquidWater']
+        dryc = crossing(lw, 0.5*max(a for _, a in lw), from_above=False)
+    p('  dried zone (alpha_l < %.3f): pendular to %s cm, ahc (liquid water'
+      ' < half) to %s cm'
+      % (0.5*ALPHA0, '%.2f' % dry if dry else '-',
+         '%.2f' % dryc if dryc else '-'))
+    T_at = None
+    for (z, a), (_, T) in zip(alpha, TpC):
+        if z == zmax:
+            T_at = T
+    wet = [z for z, a in alpha if a > 1.05*ALPHA0]
+    p('  condensation ahead of the front: alpha_l up to %.4f (%.2f x the'
+      ' initial) at %.2f cm (T = %.1f C);' % (amax, amax/ALPHA0, zmax, T_at))
+    if wet:
+        p('  alpha_l > 1.05 x initial from %.2f to %.2f cm'
+          % (min(wet), max(wet)))
+
+    # Water
+    wout, stored = water_balance('pendular/log.pendularFoam')
+    if stored is not None:
+        p('')
+        p('Water (whole hearth, x %.0f the wedge) at the last write time:'
+          % SECTOR)
+        p('  pendularFoam: lost %.3f kg; out through %s'
+          % (-stored*SECTOR, ', '.join('%s %.3f kg' % (k, v*SECTOR)
+                                      for k, v in wout.items())))
+    m = None
+    with open('conduction/log.ahcFoam') as f:
+        for line in f:
+            if 'liquid water' in line:
+                m = float(line.split('=')[1].split()[0])
+    if m is not None:
+        # initial liquid water of the wedge: W0 x the volume (checkMesh)
+        vol = None
+        with open('pendular/log.checkMesh') if os.path.exists(
+                'pendular/log.checkMesh') else open(os.devnull) as f:
+            for line in f:
+                mm = re.search(r'Total volume = (\S+)\.', line)
+                if mm:
+                    vol = float(mm.group(1))
+        if vol:
+            p('  ahcFoam:      evaporated %.3f kg (initial %.3f kg)'
+              % ((W0*vol - m)*SECTOR, W0*vol*SECTOR))
+    # heat through the fire disc
+    for case, log, pat in (
+            ('pendularFoam', 'pendular/log.pendularFoam',
+             r'Energy balance at t = [^\n]*\n\s*out through fire = (\S+)'),
+            ('ahcFoam', 'conduction/log.ahcFoam',
+             r'heat in through fire = (\S+)')):
+        with open(log) as f:
+            found = re.findall(pat, f.read())
+        if found:
+            q = float(found[-1])*(-1 if case == 'pendularFoam' else 1)
+            p('  heat in through the fire disc, %-12s %.2f MJ'
+              % (case + ':', q*SECTOR/1e6))
+    print('\n'.join(out))
+
+
+if __name__ == '__main__':
+    main()

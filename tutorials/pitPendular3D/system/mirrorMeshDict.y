@@ -1,0 +1,1 @@
+../../../etc/meshes/rectangularPit/system/mirrorMeshDict.y
