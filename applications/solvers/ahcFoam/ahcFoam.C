@@ -56,7 +56,7 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
-        #include "setDeltaT.H"
+        #include "setAdaptiveDeltaT.H"
 
         ++runTime;
 

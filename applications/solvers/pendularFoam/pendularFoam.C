@@ -73,7 +73,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        #include "setDeltaT.H"
+        #include "setAdaptiveDeltaT.H"
 
         ++runTime;
 

@@ -39,16 +39,7 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
     ),
     TName_(dict.getOrDefault<word>("T", "T"))
 {
-    const scalar t = db().time().timeOutputValue();
-    const scalar RH = relativeHumidity_->value(t);
-    if (!(RH >= 0 && RH <= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Patch " << p.name() << " of field " << iF.name()
-            << ": keyword 'relativeHumidity' = " << RH << " at t = " << t
-            << " s is outside its valid range [0, 1]"
-            << exit(FatalIOError);
-    }
+    relativeHumidity(&dict);
 
     if (dict.found("value"))
     {
@@ -116,6 +107,37 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
 {}
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::relativeHumidityFvPatchScalarField::relativeHumidity
+(
+    const dictionary* dict
+) const
+{
+    const scalar t = db().time().timeOutputValue();
+    const scalar RH = relativeHumidity_->value(t);
+    if (!(RH >= 0 && RH <= 1))
+    {
+        if (dict)
+        {
+            FatalIOErrorInFunction(*dict)
+                << "Patch " << patch().name() << " of field "
+                << internalField().name() << ": keyword 'relativeHumidity' = "
+                << RH << " at t = " << t
+                << " s is outside its valid range [0, 1]"
+                << exit(FatalIOError);
+        }
+        FatalErrorInFunction
+            << "Patch " << patch().name() << " of field "
+            << internalField().name() << " (" << internalField().objectPath()
+            << "): keyword 'relativeHumidity' = " << RH << " at t = " << t
+            << " s is outside its valid range [0, 1]"
+            << exit(FatalError);
+    }
+    return RH;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
@@ -126,16 +148,7 @@ void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
     }
 
     const scalar t = db().time().timeOutputValue();
-    const scalar RH = relativeHumidity_->value(t);
-    if (!(RH >= 0 && RH <= 1))
-    {
-        FatalErrorInFunction
-            << "Patch " << patch().name() << " of field "
-            << internalField().name() << " (" << internalField().objectPath()
-            << "): keyword 'relativeHumidity' = " << RH << " at t = " << t
-            << " s is outside its valid range [0, 1]"
-            << exit(FatalError);
-    }
+    const scalar RH = relativeHumidity();
 
     const pendularMedium& medium =
         db().lookupObject<pendularMedium>("pendularProperties");
