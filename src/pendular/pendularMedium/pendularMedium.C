@@ -486,8 +486,10 @@ Foam::scalar Foam::pendularMedium::kappa
     const scalar porosity
 ) const
 {
-    const scalar kappaFluid = alphaL*kappaLiquid_ + (1 - alphaL)*kappaGas_;
-    return conductivity_->kappa(kappaSolid_, kappaFluid, porosity);
+    return conductivity_->kappaPartiallySaturated
+    (
+        kappaSolid_, kappaLiquid_, kappaGas_, alphaL, porosity
+    );
 }
 
 // ************************************************************************* //
