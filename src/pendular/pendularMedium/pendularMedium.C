@@ -126,11 +126,19 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
 Foam::pendularMedium::saturationState
 Foam::pendularMedium::saturation(const scalar T) const
 {
+    const saturationPressureLaw& pSatLaw = kelvin_.saturationPressure();
+    const surfaceTensionLaw& sigmaLaw = kelvin_.surfaceTension();
+    const scalar pSat = pSatLaw.pSat(T);
+    const scalar sigma = sigmaLaw.sigma(T);
+    const scalar VmByR = kelvin_.Vm()/R();
     return
     {
         T,
-        kelvin_.saturationPressure().pSat(T),
-        kelvin_.Vm()*kelvin_.surfaceTension().sigma(T)/(R()*T)
+        pSat,
+        VmByR*sigma/T,
+        pSatLaw.dpSatdT(T)/pSat,
+        // d/dT [Vm sigma/(R T)] = Vm (sigma' T - sigma)/(R T^2)
+        VmByR*(sigmaLaw.dSigmadT(T)*T - sigma)/sqr(T)
     };
 }
 
@@ -192,14 +200,47 @@ Foam::scalar Foam::pendularMedium::vapourDensity
 Foam::scalar Foam::pendularMedium::dVapourDensitydT
 (
     const scalar alphaL,
-    const scalar T
+    const saturationState& sat
 ) const
 {
     if (alphaL <= 0)
     {
         return 0;
     }
-    return Mw()/(R()*T)*(kelvin_.dpwdT(alphaL, T) - kelvin_.pw(alphaL, T)/T);
+    // rho_w = M_w p_wsat exp(kelvinLength K)/(R T)
+    return
+        vapourDensity(alphaL, sat)
+       *(
+            sat.dLnPSatdT
+          + sat.dKelvinLengthdT*kelvin_.meniscus().K(alphaL)
+          - 1/sat.T
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydT
+(
+    const scalar alphaL,
+    const scalar T
+) const
+{
+    return dVapourDensitydT(alphaL, saturation(T));
+}
+
+
+Foam::scalar Foam::pendularMedium::dVapourDensitydTAtFixedW
+(
+    const scalar alphaL,
+    const saturationState& sat,
+    const scalar porosity
+) const
+{
+    // 0 = dW = W_alpha d alpha + phi (1 - alpha) rho_w,T dT
+    const scalar rhoW = vapourDensity(alphaL, sat);
+    const scalar rhoWAlpha = dVapourDensitydAlphaL(alphaL, sat);
+    return
+        dVapourDensitydT(alphaL, sat)
+       *(rhoL() - rhoW)/(rhoL() - rhoW + (1 - alphaL)*rhoWAlpha);
 }
 
 
@@ -210,12 +251,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydTAtFixedW
     const scalar porosity
 ) const
 {
-    // 0 = dW = W_alpha d alpha + phi (1 - alpha) rho_w,T dT
-    const scalar rhoW = vapourDensity(alphaL, T);
-    const scalar rhoWAlpha = dVapourDensitydAlphaL(alphaL, T);
-    return
-        dVapourDensitydT(alphaL, T)
-       *(rhoL() - rhoW)/(rhoL() - rhoW + (1 - alphaL)*rhoWAlpha);
+    return dVapourDensitydTAtFixedW(alphaL, saturation(T), porosity);
 }
 
 
@@ -243,16 +279,28 @@ Foam::scalar Foam::pendularMedium::waterContent
 Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
 (
     const scalar alphaL,
+    const saturationState& sat,
+    const scalar porosity
+) const
+{
+    // d rho_w/d alpha = rho_w kelvinLength dK/d alpha
+    const scalar rhoW = vapourDensity(alphaL, sat);
+    const scalar dRhoWdAlpha =
+        alphaL > 0
+      ? rhoW*sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL)
+      : 0;
+    return porosity*(rhoL() - rhoW + (1 - alphaL)*dRhoWdAlpha);
+}
+
+
+Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
+(
+    const scalar alphaL,
     const scalar T,
     const scalar porosity
 ) const
 {
-    return
-        porosity
-       *(
-            rhoL() - vapourDensity(alphaL, T)
-          + (1 - alphaL)*dVapourDensitydAlphaL(alphaL, T)
-        );
+    return dWaterContentdAlphaL(alphaL, saturation(T), porosity);
 }
 
 
@@ -281,8 +329,10 @@ Foam::scalar Foam::pendularMedium::alphaL
 
     for (label iter = 0; iter < 200; ++iter)
     {
+        // W(alpha) and its slope with one evaluation of the vapour
         const scalar alpha = std::exp(s);
-        const scalar g = waterContent(alpha, sat, porosity) - W;
+        const scalar rhoW = vapourDensity(alpha, sat);
+        const scalar g = porosity*(alpha*rhoL() + (1 - alpha)*rhoW) - W;
 
         if (mag(g) <= 1e-14*W)
         {
@@ -302,8 +352,9 @@ Foam::scalar Foam::pendularMedium::alphaL
         const scalar dgds =
             alpha*porosity
            *(
-                rhoL() - vapourDensity(alpha, sat)
-              + (1 - alpha)*dVapourDensitydAlphaL(alpha, sat)
+                rhoL() - rhoW
+              + (1 - alpha)*rhoW*sat.kelvinLength
+               *kelvin_.meniscus().dKdAlphaL(alpha)
             );
         scalar sNew = dgds > 0 ? s - g/dgds : 0.5*(lo + hi);
         if (!(sNew > lo && sNew < hi))
@@ -457,6 +508,32 @@ Foam::scalar Foam::pendularMedium::energy
 
 Foam::scalar Foam::pendularMedium::energyCapacity
 (
+    const saturationState& sat,
+    const scalar W,
+    const scalar alphaL,
+    const scalar pa,
+    const scalar porosity
+) const
+{
+    const scalar T = sat.T;
+    const scalar th = T - latentHeatTemperature_;
+    const scalar gas = porosity*(1 - alphaL);
+    const scalar rhoA = airDensity(pa, T);
+    const scalar rhoW = vapourDensity(alphaL, sat);
+    return
+        (1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W
+      + gas
+       *(
+            rhoA*CpAir_*(1 - th/T)
+          + rhoW*(CpVapour_ - CpLiquid_)
+          + dVapourDensitydTAtFixedW(alphaL, sat, porosity)
+           *((CpVapour_ - CpLiquid_)*th + latentHeat_)
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::energyCapacity
+(
     const scalar T,
     const scalar W,
     const scalar alphaL,
@@ -464,19 +541,7 @@ Foam::scalar Foam::pendularMedium::energyCapacity
     const scalar porosity
 ) const
 {
-    const scalar th = T - latentHeatTemperature_;
-    const scalar gas = porosity*(1 - alphaL);
-    const scalar rhoA = airDensity(pa, T);
-    const scalar rhoW = vapourDensity(alphaL, T);
-    return
-        (1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W
-      + gas
-       *(
-            rhoA*CpAir_*(1 - th/T)
-          + rhoW*(CpVapour_ - CpLiquid_)
-          + dVapourDensitydTAtFixedW(alphaL, T, porosity)
-           *((CpVapour_ - CpLiquid_)*th + latentHeat_)
-        );
+    return energyCapacity(saturation(T), W, alphaL, pa, porosity);
 }
 
 
