@@ -9,6 +9,15 @@ import sys
 # --------------------------------------------------------------------------
 # Reading results
 
+# Cost budgets (see tests/README.md): a solver test states the nonlinear
+# iterations and rejected sub-steps its runs need, measured; a run may take
+# up to 30 % more. The runs are deterministic (same binary, same input), so
+# the margin is not for noise: it lets a harmless change of the numerics
+# pass while a lost Jacobian term or acceleration (typically x2 to x10)
+# fails. Rejected sub-steps are few and discrete: 2 more are always allowed.
+COST_MARGIN = 0.3
+REJECTED_SLACK = 2
+
 def read_probes(path):
     """OpenFOAM probes file -> (locations, times, columns[probe][time])."""
     locations, times, cols = [], [], None
@@ -44,6 +53,32 @@ def read_energy_balances(log):
             if m:
                 out.append((stored, float(m.group(1)), float(m.group(2))))
     return out
+
+
+def read_solver_cost(log):
+    """Cost of an ahcFoam or pendularFoam run from its log: the sums over
+    the time steps of the per-step summary line
+      '<solver>: deltaT = .., iterations = N, sub-steps = M, rejected = R, ..'
+    -> dict(steps, iterations, subSteps, rejected). A log without such a
+    line (the solver failed at once) gives zero steps."""
+    cost = dict(steps=0, iterations=0, subSteps=0, rejected=0)
+    pattern = re.compile(r'^(ahcFoam|pendularFoam): deltaT = \S+, iterations = '
+                         r'(\d+), sub-steps = (\d+), rejected = (\d+)')
+    with open(log) as f:
+        for line in f:
+            m = pattern.match(line)
+            if m:
+                cost['steps'] += 1
+                cost['iterations'] += int(m.group(2))
+                cost['subSteps'] += int(m.group(3))
+                cost['rejected'] += int(m.group(4))
+    return cost
+
+
+def cost_allowance(stated, margin=COST_MARGIN, slack=0):
+    """Largest count a budget of `stated` allows: stated (1 + margin),
+    and at least stated + slack."""
+    return max(int(math.floor(stated*(1 + margin) + 1e-9)), stated + slack)
 
 
 def read_internal_field(path):
@@ -135,6 +170,42 @@ class Check:
         print('  %s %-60s %s' % ('ok  ' if cond else 'FAIL', what, detail))
         return cond
 
+    def cost(self, what, log, iterations, rejected, margin=COST_MARGIN):
+        """The run of `log` within its cost budget: the nonlinear iterations
+        and rejected sub-steps it was measured to need when the budget was
+        set (`iterations`, `rejected`), plus the margin. A run much cheaper
+        than its budget passes but says so: the budget is then stale."""
+        cost = read_solver_cost(log)
+        maxIter = cost_allowance(iterations, margin)
+        maxRejected = cost_allowance(rejected, margin, REJECTED_SLACK)
+        ok = cost['steps'] > 0 and cost['iterations'] <= maxIter \
+            and cost['rejected'] <= maxRejected
+        self.failed += not ok
+        print('  %s cost of %-52s %d iterations (budget %d, allowed %d), '
+              '%d rejected (budget %d, allowed %d), %d steps'
+              % ('ok  ' if ok else 'FAIL', what, cost['iterations'],
+                 iterations, maxIter, cost['rejected'], rejected, maxRejected,
+                 cost['steps']))
+        if ok and cost['iterations'] < 0.5*iterations:
+            print('       note: under half its budget: lower the budget to '
+                  'the new count if the saving is understood')
+        return ok
+
     def done(self):
         print('%s: %s' % (self.name, 'PASS' if not self.failed else 'FAIL'))
         sys.exit(1 if self.failed else 0)
+
+
+# --------------------------------------------------------------------------
+# Command line, for the tests written in shell:
+#   python3 hearthcheck.py cost NAME LOG ITERATIONS REJECTED [LOG ITER REJ ...]
+
+if __name__ == '__main__':
+    if len(sys.argv) >= 5 and sys.argv[1] == 'cost' and len(sys.argv) % 3 == 0:
+        c = Check(sys.argv[2])
+        args = sys.argv[3:]
+        for i in range(0, len(args), 3):
+            c.cost(args[i], args[i], int(args[i + 1]), int(args[i + 2]))
+        c.done()
+    print('usage: hearthcheck.py cost NAME LOG ITERATIONS REJECTED [LOG ...]')
+    sys.exit(2)
