@@ -197,15 +197,34 @@ class Check:
 
 
 # --------------------------------------------------------------------------
-# Command line, for the tests written in shell:
-#   python3 hearthcheck.py cost NAME LOG ITERATIONS REJECTED [LOG ITER REJ ...]
+# Command line (tests/Alltest, after a test's run passed):
+#   python3 hearthcheck.py budget NAME COSTBUDGET SCRATCH
+# checks every run listed in the test's costBudget file, lines of
+#   <log, relative to the test's scratch folder>  <iterations>  <rejected>
+# ('#' starts a comment).
+
+
+def check_budget_file(name, budget_file, scratch):
+    c = Check(name + ' cost budget')
+    with open(budget_file) as f:
+        rows = [line.split('#')[0].split() for line in f]
+    rows = [r for r in rows if r]
+    for r in rows:
+        if len(r) != 3:
+            c.true('%s: a line is <log> <iterations> <rejected>'
+                   % budget_file, False, ' '.join(r))
+            continue
+        log = os.path.join(scratch, r[0])
+        if not os.path.isfile(log):
+            c.true('run of %s found' % r[0], False, 'no %s' % log)
+            continue
+        c.cost(r[0], log, int(r[1]), int(r[2]))
+    c.true('the budget lists runs', bool(rows), budget_file)
+    c.done()
+
 
 if __name__ == '__main__':
-    if len(sys.argv) >= 5 and sys.argv[1] == 'cost' and len(sys.argv) % 3 == 0:
-        c = Check(sys.argv[2])
-        args = sys.argv[3:]
-        for i in range(0, len(args), 3):
-            c.cost(args[i], args[i], int(args[i + 1]), int(args[i + 2]))
-        c.done()
-    print('usage: hearthcheck.py cost NAME LOG ITERATIONS REJECTED [LOG ...]')
+    if len(sys.argv) == 5 and sys.argv[1] == 'budget':
+        check_budget_file(*sys.argv[2:])
+    print('usage: hearthcheck.py budget NAME COSTBUDGET SCRATCH')
     sys.exit(2)

@@ -5,8 +5,11 @@ the report's column at 1, 3, 6, 9 and 12 h:
   first-order time error of backward Euler with steps of up to 2 K);
 - drying-front depth (alpha_l = alpha_0/2) within two cells (2 mm), while a
   front exists (1 h; the column is dry from 1.9 h on);
-- total water within 0.5 % while the soil holds water (1 h), and both dry
-  (< 1e-9 kg/m2) afterwards;
+- total water within 0.5 % while the soil holds water (1 h); once both
+  columns are dry (1e-12 kg/m2 left in the Kelvin range), within 10 % of
+  the reference: measured 0.2-1.8 % at 3-12 h (first-order steps against
+  BDF2, 1 mm cells against 0.5 mm nodes), while a Kelvin length twice too
+  long leaves 4.6 times more;
 - the water and energy balances of pendularFoam close to 1e-8."""
 import csv
 import os
@@ -60,8 +63,12 @@ for t in (3600, 10800, 21600, 32400, 43200):
         c.le('|water - reference|/reference at %g h' % (t/3600),
              abs(water - waterRef)/waterRef, 5e-3)
     else:
-        c.le('water, dry column at %g h [kg/m2] (reference %.2g)'
-             % (t/3600, waterRef), water, 1e-9)
+        # Dried to the Kelvin range: a few 1e-12 kg/m2 are left, set by the
+        # Kelvin-Laplace equilibrium at the temperature of the column, so
+        # relative: an absolute bound would pass any value (a Kelvin length
+        # twice too long leaves 4.6 times more)
+        c.le('|water - reference|/reference, dry column at %g h (%.3g kg/m2)'
+             % (t/3600, waterRef), abs(water - waterRef)/waterRef, 0.1)
 
 bal = hc.read_energy_balances('log.pendularFoam')
 c.le('worst relative imbalance (water, air, energy)',
