@@ -1,6 +1,5 @@
-"""The graded soil of Krapez & Profice (seed paper
-../shared/seeds/002_ffd04539886d5d4b.txt §2.2; digest
-seed-ewgm-and-quadrupoles.md §4), as reconstructed for the tests, and its
+"""The graded soil of Krapez & Profice (§2.2; see doc/references.md), as
+reconstructed for the tests, and its
 approximations by layers for quadrupoleTemperature (standard library only).
 
 What the paper gives (and nothing more): the volumetric water content

@@ -12,7 +12,7 @@ at the five sensors of system/thermocouples.csv every minute:
    files have the same header, times and size; in parallel only the case
    (not processor*/) has a postProcessing folder.
 2. Serial = 2-rank parallel at every sensor and time to 1e-8 relative (in
-   C; issue 3), for the 10-digit C file and the 15-digit K file.
+   C), for the 10-digit C file and the 15-digit K file.
 3. thermocouplesK = probes at every sensor and time, to round-off of the
    15-digit output (1e-13 relative), serial and parallel.
 4. C = K - 273.15: the C file against the K file, within the rounding of

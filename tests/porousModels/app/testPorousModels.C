@@ -9,8 +9,8 @@ Description
     no mesh or case:
 
     1. effective conductivity laws (harmonic, arithmetic, geometric,
-       kuniiSmith): limits phi = 0 and 1, values certified in the theses'
-       digests, and the bounds arithmetic >= geometric >= harmonic;
+       kuniiSmith): limits phi = 0 and 1, values computed from the theses'
+       published parameters (Muhieddine 2009 Table 5.1, Mansour 2015 §4.1), and the bounds arithmetic >= geometric >= harmonic;
     2. apparent heat capacity (energyConsistent, thesisCompatible): the
        capacity integrated by composite Simpson equals the difference of
        heatingEnthalpy, and its latent part is rho_l L (energyConsistent) or
