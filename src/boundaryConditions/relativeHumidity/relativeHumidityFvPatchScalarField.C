@@ -6,6 +6,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "pendularMedium.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -39,6 +40,24 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
     ),
     TName_(dict.getOrDefault<word>("T", "T"))
 {
+    // Unknown keywords (a misspelt 'airTemperature' would silently take
+    // the patch temperature)
+    {
+        wordList allowed(checkedRead::patchFieldKeywords());
+        allowed.append
+        (
+            checkedRead::function1Keywords(dict, "relativeHumidity")
+        );
+        allowed.append(checkedRead::function1Keywords(dict, "airTemperature"));
+        allowed.append("T");
+        checkedRead::checkKeywords
+        (
+            dict, allowed,
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
+
     relativeHumidity(&dict);
 
     if (dict.found("value"))
