@@ -8,7 +8,37 @@
 #include "volFields.H"
 #include "physicoChemicalConstants.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::TminPlausible =
+    200;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::surfaceHeatLossFvPatchScalarField::checkTemperature
+(
+    const word& keyword,
+    const scalar T
+) const
+{
+    checkRange(keyword, T, checkedRead::positive(), true);
+    if (T < TminPlausible)
+    {
+        dictionary dict;
+        dict.name() = dictName_;
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' = " << T << " K (time "
+            << db().time().timeOutputValue() << ") of boundary condition "
+            << type() << " on patch '" << patch().name() << "' of field "
+            << internalField().name() << " is below " << TminPlausible
+            << " K: temperatures are in kelvin; was it typed in degrees"
+            << " Celsius (" << T << " C = " << T + 273.15 << " K)?"
+            << " Valid range [" << TminPlausible << ", inf) K" << nl
+            << exit(FatalIOError);
+    }
+}
+
 
 void Foam::surfaceHeatLossFvPatchScalarField::checkRange
 (
@@ -53,10 +83,10 @@ void Foam::surfaceHeatLossFvPatchScalarField::values
     Tsky = Tsky_.valid() ? Tsky_->value(t) : Tair;
 
     checkRange("h", h, checkedRead::nonNegative(), true);
-    checkRange("Tair", Tair, checkedRead::positive(), true);
+    checkTemperature("Tair", Tair);
     if (Tsky_.valid())
     {
-        checkRange("Tsky", Tsky, checkedRead::nonNegative(), true);
+        checkTemperature("Tsky", Tsky);
     }
 }
 
@@ -137,6 +167,27 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     kappaName_(dict.getOrDefault<word>("kappa", "kappa")),
     dictName_(dict.name())
 {
+    // Unknown keywords (a misspelt 'emissivity' would switch radiation
+    // off): the standard ones, those written for a restart, the
+    // Function1s' and this condition's
+    {
+        wordList allowed(checkedRead::patchFieldKeywords());
+        allowed.append
+        (
+            wordList({"refValue", "refGradient", "valueFraction"})
+        );
+        allowed.append(checkedRead::function1Keywords(dict, "h"));
+        allowed.append(checkedRead::function1Keywords(dict, "Tair"));
+        allowed.append(checkedRead::function1Keywords(dict, "Tsky"));
+        allowed.append(wordList({"emissivity", "kappa"}));
+        checkedRead::checkKeywords
+        (
+            dict, allowed,
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
+
     if (dict.found("Tsky"))
     {
         Tsky_ = Function1<scalar>::New("Tsky", dict);
