@@ -74,6 +74,7 @@ Usage
 #include "fvCFD.H"
 #include "meshSearch.H"
 #include "checkedRead.H"
+#include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
 #include "OFstream.H"
