@@ -41,9 +41,17 @@ Description
 
     Optimiser: hearthFit::levenbergMarquardt (leastSquares/).
 
+    Nothing is written outside <workDir> but the -writeCase copy: an
+    existing -writeCase directory is refused without -overwrite, the case
+    itself and directories inside its system, constant or start time (they
+    would be copied into themselves) always, and such a workDir too, all
+    before any run. Unknown keywords of hearthFitDict are errors naming
+    the nearest valid one. A zero-residual fit (s^2 = 0) reports
+    zero-width intervals.
+
 Usage
-    hearthFit [-case DIR] [-writeCase DIR] [-keepScratch] [-resume]
-        [-maxIterations N]
+    hearthFit [-case DIR] [-writeCase DIR [-overwrite]] [-keepScratch]
+        [-resume] [-maxIterations N]
 
 \*---------------------------------------------------------------------------*/
 
