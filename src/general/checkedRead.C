@@ -251,6 +251,39 @@ Foam::wordList Foam::checkedRead::function1Keywords
 }
 
 
+void Foam::checkedRead::checkAirTemperature
+(
+    const fileName& file,
+    const word& keyword,
+    const scalar T,
+    const scalar t,
+    const string& where
+)
+{
+    if (T > 0 && T >= minAirTemperature)
+    {
+        return;
+    }
+    FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, -1, -1)
+        << "Keyword '" << keyword << "' = " << T << " K (time " << t
+        << ") of " << where.c_str();
+    if (!(T > 0))
+    {
+        FatalIOError
+            << " is outside its valid range (0, inf) K";
+    }
+    else
+    {
+        FatalIOError
+            << " is below " << minAirTemperature << " K: temperatures are"
+            << " in kelvin; was it typed in degrees Celsius (" << T
+            << " C = " << T + 273.15 << " K)? Valid range ["
+            << minAirTemperature << ", inf) K";
+    }
+    FatalIOError << nl << exit(FatalIOError);
+}
+
+
 Foam::wordList Foam::checkedRead::patchFieldKeywords()
 {
     return wordList({"type", "value", "patchType"});

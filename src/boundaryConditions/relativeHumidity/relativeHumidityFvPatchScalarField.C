@@ -60,6 +60,20 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
 
     relativeHumidity(&dict);
 
+    // The air temperature in kelvin (degrees Celsius typed would give a
+    // saturation pressure of nearly 0: dry air)
+    if (airTemperature_.valid())
+    {
+        checkedRead::checkAirTemperature
+        (
+            dict.name(), "airTemperature",
+            airTemperature_->value(db().time().timeOutputValue()),
+            db().time().timeOutputValue(),
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
+
     if (dict.found("value"))
     {
         fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
@@ -174,11 +188,24 @@ void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
     const fvPatchScalarField& Tp =
         patch().lookupPatchField<volScalarField, scalar>(TName_);
 
+    // The air temperature of the Function1, in kelvin (checked)
+    const scalar TairUniform =
+        airTemperature_.valid() ? airTemperature_->value(t) : 0;
+    if (airTemperature_.valid())
+    {
+        checkedRead::checkAirTemperature
+        (
+            internalField().objectPath(), "airTemperature", TairUniform, t,
+            "boundary condition " + type() + " on patch '" + patch().name()
+          + "' of field " + internalField().name()
+        );
+    }
+
     scalarField pw(Tp.size());
     forAll(pw, facei)
     {
         const scalar Tair =
-            airTemperature_.valid() ? airTemperature_->value(t) : Tp[facei];
+            airTemperature_.valid() ? TairUniform : Tp[facei];
         pw[facei] = RH*medium.kelvin().saturationPressure().pSat(Tair);
     }
     operator==(pw);

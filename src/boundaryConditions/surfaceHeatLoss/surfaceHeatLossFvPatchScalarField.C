@@ -11,7 +11,7 @@
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::TminPlausible =
-    200;
+    Foam::checkedRead::minAirTemperature;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -22,21 +22,12 @@ void Foam::surfaceHeatLossFvPatchScalarField::checkTemperature
     const scalar T
 ) const
 {
-    checkRange(keyword, T, checkedRead::positive(), true);
-    if (T < TminPlausible)
-    {
-        dictionary dict;
-        dict.name() = dictName_;
-        FatalIOErrorInFunction(dict)
-            << "Keyword '" << keyword << "' = " << T << " K (time "
-            << db().time().timeOutputValue() << ") of boundary condition "
-            << type() << " on patch '" << patch().name() << "' of field "
-            << internalField().name() << " is below " << TminPlausible
-            << " K: temperatures are in kelvin; was it typed in degrees"
-            << " Celsius (" << T << " C = " << T + 273.15 << " K)?"
-            << " Valid range [" << TminPlausible << ", inf) K" << nl
-            << exit(FatalIOError);
-    }
+    checkedRead::checkAirTemperature
+    (
+        dictName_, keyword, T, db().time().timeOutputValue(),
+        "boundary condition " + type() + " on patch '" + patch().name()
+      + "' of field " + internalField().name()
+    );
 }
 
 
