@@ -8,6 +8,7 @@
 #include "HashTable.H"
 #include "HashSet.H"
 #include "entry.H"
+#include "wordRe.H"
 
 #include <cctype>
 #include <cmath>
@@ -149,10 +150,24 @@ void Foam::checkedRead::checkKeywords
 {
     for (const entry& e : dict)
     {
-        const word& key = e.keyword();
+        const keyType& key = e.keyword();
         if (key == "FoamFile" || allowed.found(key))
         {
             continue;
+        }
+        if (key.isPattern())
+        {
+            // A regular expression: valid if it names a valid keyword
+            const wordRe re(key, wordRe::REGEX);
+            bool matches = false;
+            for (const word& k : allowed)
+            {
+                matches = matches || re.match(k);
+            }
+            if (matches)
+            {
+                continue;
+            }
         }
 
         const word near(nearest(key, allowed));
@@ -349,7 +364,7 @@ Foam::dimensionedScalar Foam::checkedRead::get
     // tokeniser, which dimensioned<scalar> would take for a name and then
     // fail with 'attempt to read beyond EOF'
     {
-        const entry& e = *dict.findEntry(keyword, keyType::LITERAL);
+        const entry& e = *dict.findEntry(keyword, keyType::REGEX);
         tokenList tokens;
         if (e.isStream())
         {
