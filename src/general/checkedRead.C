@@ -5,6 +5,14 @@
 #include "checkedRead.H"
 #include "OStringStream.H"
 #include "token.H"
+#include "HashTable.H"
+#include "HashSet.H"
+#include "entry.H"
+#include "wordRe.H"
+
+#include <cctype>
+#include <cmath>
+#include <vector>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -63,6 +71,240 @@ void Foam::checkedRead::check
 }
 
 
+Foam::label Foam::checkedRead::editDistance
+(
+    const std::string& a,
+    const std::string& b
+)
+{
+    const size_t n = a.size();
+    const size_t m = b.size();
+    auto eq = [&](const size_t i, const size_t j)
+    {
+        return
+            std::tolower(static_cast<unsigned char>(a[i]))
+         == std::tolower(static_cast<unsigned char>(b[j]));
+    };
+
+    std::vector<std::vector<label>> d(n + 1, std::vector<label>(m + 1, 0));
+    for (size_t i = 0; i <= n; ++i) d[i][0] = i;
+    for (size_t j = 0; j <= m; ++j) d[0][j] = j;
+    for (size_t i = 1; i <= n; ++i)
+    {
+        for (size_t j = 1; j <= m; ++j)
+        {
+            const label cost = eq(i - 1, j - 1) ? 0 : 1;
+            d[i][j] =
+                min
+                (
+                    min(d[i - 1][j] + 1, d[i][j - 1] + 1),
+                    d[i - 1][j - 1] + cost
+                );
+            if
+            (
+                i > 1 && j > 1 && eq(i - 1, j - 2) && eq(i - 2, j - 1)
+            )
+            {
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    return d[n][m];
+}
+
+
+Foam::word Foam::checkedRead::nearest
+(
+    const word& key,
+    const wordList& candidates
+)
+{
+    word best;
+    label bestDist = labelMax;
+    label bestCase = labelMax;
+    for (const word& c : candidates)
+    {
+        const label dist = editDistance(key, c);
+        label caseDiffs = 0;
+        for (size_t i = 0; i < min(key.size(), c.size()); ++i)
+        {
+            caseDiffs += (key[i] != c[i]);
+        }
+        if (dist < bestDist || (dist == bestDist && caseDiffs < bestCase))
+        {
+            best = c;
+            bestDist = dist;
+            bestCase = caseDiffs;
+        }
+    }
+    return best;
+}
+
+
+void Foam::checkedRead::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& allowed,
+    const string& where
+)
+{
+    for (const entry& e : dict)
+    {
+        const keyType& key = e.keyword();
+        if (key == "FoamFile" || allowed.found(key))
+        {
+            continue;
+        }
+        if (key.isPattern())
+        {
+            // A regular expression: valid if it names a valid keyword
+            const wordRe re(key, wordRe::REGEX);
+            bool matches = false;
+            for (const word& k : allowed)
+            {
+                matches = matches || re.match(k);
+            }
+            if (matches)
+            {
+                continue;
+            }
+        }
+
+        const word near(nearest(key, allowed));
+        const label line = e.startLineNumber();
+
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+            line > 0 ? line : -1, -1
+        )   << "Unknown keyword '" << key << "'";
+        if (line > 0)
+        {
+            FatalIOError << " (line " << line << ")";
+        }
+        FatalIOError << " in dictionary " << dict.name();
+        if (where.size())
+        {
+            FatalIOError << " (" << where.c_str() << ")";
+        }
+        if (near.size())
+        {
+            FatalIOError << ": did you mean '" << near << "'?";
+        }
+        // The valid keywords once each, in their order
+        wordHashSet seen;
+        OStringStream valid;
+        for (const word& k : allowed)
+        {
+            if (seen.insert(k))
+            {
+                valid << ' ' << k;
+            }
+        }
+        FatalIOError
+            << nl << "    Valid keywords:" << valid.str().c_str() << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::wordList Foam::checkedRead::function1Keywords
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const word coeffsName(key + "Coeffs");
+    wordList keys({key, coeffsName});
+
+    const entry* eptr = dict.findEntry(key, keyType::LITERAL);
+    if (!eptr || eptr->isDict() || dict.isDict(coeffsName))
+    {
+        return keys;
+    }
+
+    // Inline form 'key <type> ...': the type reads its coefficients from
+    // dict itself (Function1<Type>::New: dict.optionalSubDict(keyCoeffs))
+    const tokenList& tokens = static_cast<const tokenList&>(eptr->stream());
+    if (tokens.empty() || !tokens.first().isWord())
+    {
+        return keys;
+    }
+    const word type(tokens.first().wordToken());
+
+    static const HashTable<wordList> typeKeys
+    {
+        {"table", {"outOfBounds", "interpolationScheme"}},
+        {"tableFile", {"file", "outOfBounds", "interpolationScheme"}},
+        {
+            "csvFile",
+            {
+                "nHeaderLine", "refColumn", "componentColumns", "separator",
+                "mergeSeparators", "file", "outOfBounds",
+                "interpolationScheme"
+            }
+        },
+        {"sine", {"t0", "amplitude", "frequency", "scale", "level"}},
+        {
+            "square",
+            {"t0", "markSpace", "amplitude", "frequency", "scale", "level"}
+        },
+        {"scale", {"scale", "value"}},
+        {"linearRamp", {"start", "duration"}},
+        {"quadraticRamp", {"start", "duration"}},
+        {"halfCosineRamp", {"start", "duration"}},
+        {"quarterSineRamp", {"start", "duration"}},
+        {"quarterCosineRamp", {"start", "duration"}}
+    };
+
+    const auto iter = typeKeys.cfind(type);
+    if (iter.found())
+    {
+        keys.append(iter.val());
+    }
+    return keys;
+}
+
+
+void Foam::checkedRead::checkAirTemperature
+(
+    const fileName& file,
+    const word& keyword,
+    const scalar T,
+    const scalar t,
+    const string& where
+)
+{
+    if (T > 0 && T >= minAirTemperature)
+    {
+        return;
+    }
+    FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, -1, -1)
+        << "Keyword '" << keyword << "' = " << T << " K (time " << t
+        << ") of " << where.c_str();
+    if (!(T > 0))
+    {
+        FatalIOError
+            << " is outside its valid range (0, inf) K";
+    }
+    else
+    {
+        FatalIOError
+            << " is below " << minAirTemperature << " K: temperatures are"
+            << " in kelvin; was it typed in degrees Celsius (" << T
+            << " C = " << T + 273.15 << " K)? Valid range ["
+            << minAirTemperature << ", inf) K";
+    }
+    FatalIOError << nl << exit(FatalIOError);
+}
+
+
+Foam::wordList Foam::checkedRead::patchFieldKeywords()
+{
+    return wordList({"type", "value", "patchType"});
+}
+
+
 void Foam::checkedRead::check
 (
     const fileName& fieldFile,
@@ -98,11 +340,67 @@ Foam::dimensionedScalar Foam::checkedRead::get
 {
     if (!dict.found(keyword))
     {
+        // A near miss among the keywords given (a misspelt keyword)
+        const word near(nearest(keyword, dict.toc()));
+        string nearText;
+        if
+        (
+            near.size() && near != "FoamFile"
+         && editDistance(near, keyword) <= max(2, label(keyword.size())/4)
+        )
+        {
+            nearText =
+                " (found '" + near + "': a misspelling of '" + keyword
+              + "'?)";
+        }
         FatalIOErrorInFunction(dict)
             << "Missing keyword '" << keyword << "' in dictionary "
             << dict.name() << ": expected a value with dimensions " << dims
-            << " in the range " << range.str().c_str() << nl
-            << exit(FatalIOError);
+            << " in the range " << range.str().c_str() << nearText.c_str()
+            << nl << exit(FatalIOError);
+    }
+
+    // The value must be a finite number: 'nan' or 'inf' are words to the
+    // tokeniser, which dimensioned<scalar> would take for a name and then
+    // fail with 'attempt to read beyond EOF'
+    {
+        const entry& e = *dict.findEntry(keyword, keyType::REGEX);
+        tokenList tokens;
+        if (e.isStream())
+        {
+            tokens = static_cast<const tokenList&>(e.stream());
+        }
+        if
+        (
+            e.isDict() || tokens.empty()
+         || !tokens.last().isNumber()
+         || !std::isfinite(tokens.last().number())
+        )
+        {
+            OStringStream os;
+            if (e.isDict())
+            {
+                os  << "a sub-dictionary";
+            }
+            else
+            {
+                forAll(tokens, i)
+                {
+                    os  << (i ? " " : "") << tokens[i];
+                }
+            }
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+                e.startLineNumber(), -1
+            )   << "Keyword '" << keyword << "' = " << os.str().c_str()
+                << " in dictionary " << dict.name()
+                << " is not a finite number (nan and inf are not accepted):"
+                << " expected a value"
+                << (dims.dimensionless() ? "" : " (dimensions optional)")
+                << " in the range " << range.str().c_str() << nl
+                << exit(FatalIOError);
+        }
     }
 
     // Dimensions are optional in the file. Read them unchecked, so that a

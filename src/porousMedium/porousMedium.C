@@ -134,6 +134,23 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
     conductivityModel_(effectiveConductivityModel::New(*this)),
     phaseChange_(nullptr)
 {
+    // Unknown keywords: a misspelt one would be ignored or take a default
+    {
+        wordList allowed
+        ({
+            "solid", "liquid", "vapour", "porosity", "waterContent",
+            "saturation", "phaseChange"
+        });
+        allowed.append
+        (
+            checkedRead::modelKeywords
+            (
+                *this, "conductivityModel", conductivityModel_()
+            )
+        );
+        checkedRead::checkKeywords(*this, allowed);
+    }
+
     const auto range01 = checkedRead::closedOpen(0, 1);
     const auto positive = checkedRead::positive();
 

@@ -25,7 +25,12 @@
 - failing runs: at least one forward run failed and the fit still
   recovers the truth within 0.5 %;
 - bad input: each of the 6 cases of run step 5 failed with its message and
-  made no scratch copy (badInput.txt)."""
+  made no scratch copy (badInput.txt);
+- zero residual (run step 6): exit status 0 (converged: zeroResidual), no
+  crash signal or stack trace in the log, cost 0 and s^2 = 0 said in the
+  report, the estimates equal to the truth, standard errors 0 and
+  zero-width intervals (lower = upper = estimate) in parameters.csv, a
+  finite correlation matrix, scratch copies removed."""
 import csv
 import math
 import os
@@ -215,5 +220,38 @@ with open('badInput.txt') as f:
 c.true('bad input: 6 cases', len(bad) == 6)
 for line in bad:
     c.true('bad input: ' + line, line.split(': ', 1)[1].startswith('ok'))
+
+# 6. Zero residual
+with open('zeroResidual.status') as f:
+    st = int(f.read())
+with open('zeroResidual/log.hearthFit') as f:
+    log = f.read()
+c.true('zero residual: exit status 0 (%d)' % st, st == 0)
+c.true('zero residual: no crash (signal, stack trace) in the log',
+       not re.search(r'^ *#\d+ |printStack|sigFpe::sigHandler', log, re.M))
+rep = report('zeroResidual')
+c.true('zero residual: status zeroResidual, converged',
+       'zeroResidual (converged)' in rep)
+c.true('zero residual: the report says s^2 = 0 and why the intervals have'
+       ' zero width', 's^2 = 0: the model reproduces every observation'
+       ' exactly' in rep and 'zero width' in rep)
+p = params('zeroResidual')
+for k in ('ks', 'phi'):
+    r = p[k]
+    c.true('zero residual: %s estimate %s = truth %g' % (k, r['estimate'],
+                                                        truth[k]),
+           float(r['estimate']) == truth[k])
+    c.true('zero residual: %s std error 0, interval [%s, %s] of zero width'
+           % (k, r['lower'], r['upper']),
+           float(r['std_error']) == 0
+           and float(r['lower']) == float(r['estimate'])
+           == float(r['upper']))
+corr = re.search(r'correlation matrix\n(.*?)\n\n', rep, re.S)
+c.true('zero residual: finite correlation matrix',
+       corr is not None and 'nan' not in corr.group(1)
+       and len(corr.group(1).splitlines()) == 2)
+c.true('zero residual: scratch copies removed',
+       not [d for d in os.listdir('zeroResidual/postProcessing/hearthFit')
+            if d.startswith('scratch')])
 
 c.done()

@@ -33,6 +33,7 @@ Description
 
 #include "fvCFD.H"
 #include "porousMedium.H"
+#include "checkedRead.H"
 #include "andersonAcceleration.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -56,6 +57,7 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
+        #include "checkNonlinearKeywords.H"
         #include "setAdaptiveDeltaT.H"
 
         ++runTime;

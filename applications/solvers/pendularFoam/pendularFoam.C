@@ -66,6 +66,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
     #include "readControls.H"
+    #include "checkNonlinearKeywords.H"
     #include "createFields.H"
     #include "createBalances.H"
 

@@ -72,6 +72,29 @@ Foam::fireHistory::fireHistory
     ),
     description_()
 {
+    // Unknown keywords (a misspelt 'rampTime' would silently give none)
+    checkedRead::checkKeywords
+    (
+        fireDict,
+        wordList({"patch", "temperature", "rampTime", "rampStartTemperature"})
+    );
+    if (coolingType_ == "exponential")
+    {
+        checkedRead::checkKeywords
+        (
+            coolingDict, wordList({"type", "duration", "Tair", "tau"}),
+            "cooling type exponential"
+        );
+    }
+    else if (coolingType_ == "table")
+    {
+        checkedRead::checkKeywords
+        (
+            coolingDict, wordList({"type", "duration", "table"}),
+            "cooling type table"
+        );
+    }
+
     OStringStream os;
     os  << "fire at " << fireTemperature_ - zeroCelsius << " C";
     if (rampTime_ > 0)

@@ -61,7 +61,9 @@ Description
 
     Every entry is checked before the first run: bad input stops with a
     FatalIOError naming the file, the keyword and the valid range or
-    choices.
+    choices; an unknown keyword, naming the nearest valid one; a workDir
+    that is the case or lies inside its system, constant or start time
+    (copied into workDir/scratchCase) is refused.
 
 Usage
     hearthDuration [-duration h] [-case dir]
@@ -74,6 +76,7 @@ Usage
 #include "fvCFD.H"
 #include "meshSearch.H"
 #include "checkedRead.H"
+#include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
 #include "OFstream.H"

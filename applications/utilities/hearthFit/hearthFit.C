@@ -41,9 +41,17 @@ Description
 
     Optimiser: hearthFit::levenbergMarquardt (leastSquares/).
 
+    Nothing is written outside <workDir> but the -writeCase copy: an
+    existing -writeCase directory is refused without -overwrite, the case
+    itself and directories inside its system, constant or start time (they
+    would be copied into themselves) always, and such a workDir too, all
+    before any run. Unknown keywords of hearthFitDict are errors naming
+    the nearest valid one. A zero-residual fit (s^2 = 0) reports
+    zero-width intervals.
+
 Usage
-    hearthFit [-case DIR] [-writeCase DIR] [-keepScratch] [-resume]
-        [-maxIterations N]
+    hearthFit [-case DIR] [-writeCase DIR [-overwrite]] [-keepScratch]
+        [-resume] [-maxIterations N]
 
 \*---------------------------------------------------------------------------*/
 
@@ -58,6 +66,8 @@ Usage
 
 #include "levenbergMarquardt.H"
 #include "laloyMassard.H"
+#include "checkedRead.H"
+#include "casePaths.H"
 
 #include <chrono>
 #include <cmath>
@@ -283,6 +293,12 @@ int main(int argc, char *argv[])
     (
         "writeCase", "dir", "write a copy of the case with the best parameters"
     );
+    argList::addBoolOption
+    (
+        "overwrite",
+        "let -writeCase write into an existing directory (never the case"
+        " itself)"
+    );
     argList::addBoolOption("keepScratch", "keep the scratch copies");
     argList::addBoolOption
     (
@@ -321,6 +337,49 @@ int main(int argc, char *argv[])
     const fileName casePath(runTime.path());
     const word startName(runTime.timeName());
 
+    // ---- -writeCase: checked before anything is run. The copy (system,
+    //      constant, start time, parameter dictionaries rewritten) must not
+    //      replace what the user wrote: an existing directory only with
+    //      -overwrite, never the case itself, never inside a directory that
+    //      is copied (the copy would contain itself)
+    fileName writeCasePath;
+    if (args.found("writeCase"))
+    {
+        writeCasePath = casePaths::canonical(args.get<fileName>("writeCase"));
+        const fileName holder
+        (
+            casePaths::copiedDirHolding(casePath, startName, writeCasePath)
+        );
+        if (casePaths::inside(casePath, writeCasePath))
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << " (" << writeCasePath << ") is the case " << casePath
+                << " or contains it: its system, constant and "
+                << startName << " would be overwritten. Give a new"
+                << " directory outside the case" << exit(FatalError);
+        }
+        if (!holder.empty())
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << " (" << writeCasePath << ") lies inside " << holder
+                << ", which is itself copied into it: the copy would"
+                << " contain itself. Give a directory outside the case's"
+                << " system, constant and " << startName << exit(FatalError);
+        }
+        if (exists(writeCasePath) && !args.found("overwrite"))
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << ": " << writeCasePath << " exists; its system, constant"
+                << " and " << startName << " would be replaced and its"
+                << " parameter dictionaries rewritten without their"
+                << " comments. Give a new directory, or add -overwrite"
+                << exit(FatalError);
+        }
+    }
+
     IOdictionary fitDict
     (
         IOobject
@@ -332,6 +391,31 @@ int main(int argc, char *argv[])
             IOobject::NO_WRITE
         )
     );
+
+    // Unknown keywords (a misspelt one would silently take its default)
+    checkedRead::checkKeywords
+    (
+        fitDict,
+        wordList
+        ({
+            "parameters", "observations", "forwardModel", "method",
+            "firstEstimate"
+        })
+    );
+
+    if (fitDict.isDict("method"))
+    {
+        checkedRead::checkKeywords
+        (
+            fitDict.subDict("method"),
+            wordList
+            ({
+                "type", "difference", "solverNoise", "relativeStep",
+                "maxIterations", "tolStep", "tolGradient", "tolCost",
+                "initialDamping", "confidence"
+            })
+        );
+    }
 
     // ---- Parameters
     const dictionary& parsDict = fitDict.subDict("parameters");
@@ -352,6 +436,17 @@ int main(int argc, char *argv[])
         const dictionary& d = e.dict();
         ParameterSpec s;
         s.name = e.keyword();
+        checkedRead::checkKeywords
+        (
+            d,
+            wordList
+            ({
+                "file", "entry", "scale", "sensor", "component", "initial",
+                "min", "max", "typical", "transform", "initialFrom",
+                "initialFactor"
+            }),
+            "parameter " + s.name
+        );
         if (d.found("sensor"))
         {
             // An offset [m] of a sensor's position along x, y or z
@@ -475,6 +570,12 @@ int main(int argc, char *argv[])
 
     // ---- Observations
     const dictionary& obsDict = fitDict.subDict("observations");
+    checkedRead::checkKeywords
+    (
+        obsDict,
+        wordList
+        ({"file", "timeWindow", "sensors", "sigma", "sigmas", "weights"})
+    );
     const fileName obsFile(obsDict.get<fileName>("file").expand());
     const fileName obsPath(obsFile.isAbsolute() ? obsFile : casePath/obsFile);
     Histories measured;
@@ -511,6 +612,15 @@ int main(int argc, char *argv[])
     const scalar sigmaAll = obsDict.lookupOrDefault<scalar>("sigma", 1);
     const dictionary* sigmasDict = obsDict.findDict("sigmas");
     const dictionary* weightsDict = obsDict.findDict("weights");
+    // Their keywords are the observed sensors (a misspelt name would
+    // silently keep the default)
+    for (const dictionary* sw : {sigmasDict, weightsDict})
+    {
+        if (sw)
+        {
+            checkedRead::checkKeywords(*sw, sensors, "observed sensors");
+        }
+    }
     forAll(sensors, si)
     {
         for (size_t c = 0; c < measured.names.size(); ++c)
@@ -565,6 +675,15 @@ int main(int argc, char *argv[])
 
     // ---- Forward model
     const dictionary& fwdDict = fitDict.subDict("forwardModel");
+    checkedRead::checkKeywords
+    (
+        fwdDict,
+        wordList
+        ({
+            "solver", "nProcs", "mpirun", "maxConcurrentRuns",
+            "functionObject", "workDir"
+        })
+    );
     const string solver
     (
         fwdDict.lookupOrDefault<fileName>("solver", fileName("ahcFoam")).expand()
@@ -750,6 +869,15 @@ int main(int argc, char *argv[])
     if (firstDict)
     {
         const dictionary& fd = *firstDict;
+        checkedRead::checkKeywords
+        (
+            fd,
+            wordList
+            ({
+                "surfaceTemperature", "initialTemperature", "sensors",
+                "surfaceZ", "timeOrigin"
+            })
+        );
         const scalar T0 = fd.get<scalar>("surfaceTemperature");
         const scalar Ti = fd.get<scalar>("initialTemperature");
         const scalar zSurf = fd.lookupOrDefault<scalar>("surfaceZ", 0);
@@ -885,7 +1013,51 @@ int main(int argc, char *argv[])
         ).expand()
     );
     if (!workDir.isAbsolute()) workDir = casePath/workDir;
+    workDir = casePaths::canonical(workDir);
     const bool keepScratch = args.found("keepScratch");
+
+    // The work folder receives a copy of system, constant and the start
+    // time per concurrent run: inside one of them it would copy itself
+    // (until the path is too long)
+    {
+        const fileName holder
+        (
+            casePaths::copiedDirHolding(casePath, startName, workDir)
+        );
+        if (!holder.empty())
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "Keyword 'workDir' = " << workDir << " lies inside "
+                << holder << ", which is copied into workDir for each"
+                << " forward run: the copy would contain itself. Expected"
+                << " a directory outside the case's system, constant and "
+                << startName << " (default postProcessing/hearthFit)"
+                << exit(FatalIOError);
+        }
+        if (workDir == casePaths::canonical(casePath))
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "Keyword 'workDir' = " << workDir << " is the case"
+                << " itself: its outputs would mix with the case's files."
+                << " Expected a directory of its own (default"
+                << " postProcessing/hearthFit)" << exit(FatalIOError);
+        }
+        if
+        (
+            writeCasePath.size()
+         && (
+                casePaths::inside(writeCasePath, workDir)
+             || casePaths::inside(workDir, writeCasePath)
+            )
+        )
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "-writeCase " << writeCasePath << " and keyword"
+                << " 'workDir' = " << workDir << " overlap: the scratch"
+                << " copies would be mixed with the written case. Give"
+                << " separate directories" << exit(FatalIOError);
+        }
+    }
 
     // ---- Method
     hearthFit::FitOptions opts;
@@ -1419,7 +1591,16 @@ int main(int argc, char *argv[])
     rep << std::setprecision(8)
         << "cost (weighted residual sum of squares) " << res.cost
         << ", residuals " << res.residuals.size() << ", dof " << res.dof
-        << ", s^2 " << res.sigma2 << "\n\n";
+        << ", s^2 " << res.sigma2 << "\n";
+    if (res.dof > 0 && res.sigma2 == 0)
+    {
+        rep << "s^2 = 0: the model reproduces every observation exactly"
+            << " (noise-free data made by the model itself?): the standard"
+            << " errors are 0 and the intervals have zero width (they"
+            << " measure the noise, and there is none); the correlation"
+            << " matrix is that of (J^T J)^-1\n";
+    }
+    rep << "\n";
     const int pct = int(std::round(100*opts.confidence));
     rep << std::setprecision(10) << std::left << std::setw(12) << "parameter" << std::right
         << std::setw(18) << "estimate" << std::setw(18) << "std error"
@@ -1652,8 +1833,7 @@ int main(int argc, char *argv[])
 
     if (args.found("writeCase"))
     {
-        fileName out(args.get<fileName>("writeCase").expand());
-        if (!out.isAbsolute()) out = cwd()/out;
+        const fileName& out = writeCasePath;
         if
         (
             !mkDir(out)

@@ -145,27 +145,6 @@ string intervalText(const scalar from, const scalar to, const bool closedTop)
 }
 
 
-//- Keywords of a dictionary that are not in the valid list: FatalIOError
-void checkKeywords
-(
-    const dictionary& dict,
-    const wordList& valid,
-    const string& where
-)
-{
-    for (const entry& e : dict)
-    {
-        if (!valid.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << e.keyword() << "' in "
-                << where.c_str() << ": valid keywords are "
-                << flatOutput(valid) << nl << exit(FatalIOError);
-        }
-    }
-}
-
-
 //- Read the layers or the profile of one property
 std::vector<profilePiece> readPieces
 (
@@ -187,7 +166,7 @@ std::vector<profilePiece> readPieces
     }
     const dictionary& propDict = topDict.subDict(prop.name);
 
-    checkKeywords
+    checkedRead::checkKeywords
     (
         propDict, wordList({"layers", "profile", "profileCoeffs"}),
         "'" + prop.name + "' of " + topDict.name()
@@ -252,7 +231,7 @@ std::vector<profilePiece> readPieces
                 << exit(FatalIOError);
         }
         const dictionary& ld = e.dict();
-        checkKeywords
+        checkedRead::checkKeywords
         (
             ld, wordList({"from", "to", "value", "valueCoeffs"}),
             "layer '" + where + "' of " + topDict.name()
@@ -692,7 +671,7 @@ int main(int argc, char *argv[])
     {
         valid.append(p.name);
     }
-    checkKeywords(dict, valid, "the top level of " + dictArg);
+    checkedRead::checkKeywords(dict, valid, "the top level of " + dictArg);
 
     const point origin(dict.getOrDefault<point>("origin", point::zero));
     vector direction(dict.getOrDefault<vector>("direction", vector(0, 0, -1)));

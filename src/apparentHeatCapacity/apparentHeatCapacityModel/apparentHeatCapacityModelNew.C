@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "apparentHeatCapacityModel.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -14,6 +15,13 @@ Foam::apparentHeatCapacityModel::New
     const phaseProperties& vapour
 )
 {
+    // Unknown keywords (a misspelt 'irreversible' would give its default)
+    checkedRead::checkKeywords
+    (
+        dict,
+        wordList({"type", "Tv", "dT", "latentHeat", "irreversible"})
+    );
+
     const word modelType(dict.getOrDefault<word>("type", "energyConsistent"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);

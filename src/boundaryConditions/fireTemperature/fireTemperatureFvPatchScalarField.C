@@ -9,6 +9,7 @@
 #include "DynamicList.H"
 #include "OSspecific.H"
 #include "OStringStream.H"
+#include "checkedRead.H"
 
 #include <algorithm>
 #include <cerrno>
@@ -250,26 +251,18 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
     };
 
     // Unknown keywords (a misspelt 'timeUnit' would silently give seconds)
-    for (const entry& e : dict)
     {
-        const word& key = e.keyword();
-        bool known = false;
+        wordList known;
         for (const char* k : knownKeywords)
         {
-            known = known || key == k;
+            known.append(k);
         }
-        if (!known)
-        {
-            OStringStream valid;
-            for (const char* k : knownKeywords)
-            {
-                valid << ' ' << k;
-            }
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword '" << key << "'" << where().c_str()
-                << nl << "    Valid keywords:" << valid.str().c_str() << nl
-                << exit(FatalIOError);
-        }
+        checkedRead::checkKeywords
+        (
+            dict, known,
+            "boundary condition " + type() + " on patch '" + patch().name()
+          + "' of field " + internalField().name()
+        );
     }
 
     // Columns

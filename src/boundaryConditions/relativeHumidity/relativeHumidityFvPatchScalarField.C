@@ -6,6 +6,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "pendularMedium.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -39,7 +40,39 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
     ),
     TName_(dict.getOrDefault<word>("T", "T"))
 {
+    // Unknown keywords (a misspelt 'airTemperature' would silently take
+    // the patch temperature)
+    {
+        wordList allowed(checkedRead::patchFieldKeywords());
+        allowed.append
+        (
+            checkedRead::function1Keywords(dict, "relativeHumidity")
+        );
+        allowed.append(checkedRead::function1Keywords(dict, "airTemperature"));
+        allowed.append("T");
+        checkedRead::checkKeywords
+        (
+            dict, allowed,
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
+
     relativeHumidity(&dict);
+
+    // The air temperature in kelvin (degrees Celsius typed would give a
+    // saturation pressure of nearly 0: dry air)
+    if (airTemperature_.valid())
+    {
+        checkedRead::checkAirTemperature
+        (
+            dict.name(), "airTemperature",
+            airTemperature_->value(db().time().timeOutputValue()),
+            db().time().timeOutputValue(),
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
 
     if (dict.found("value"))
     {
@@ -155,11 +188,24 @@ void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
     const fvPatchScalarField& Tp =
         patch().lookupPatchField<volScalarField, scalar>(TName_);
 
+    // The air temperature of the Function1, in kelvin (checked)
+    const scalar TairUniform =
+        airTemperature_.valid() ? airTemperature_->value(t) : 0;
+    if (airTemperature_.valid())
+    {
+        checkedRead::checkAirTemperature
+        (
+            internalField().objectPath(), "airTemperature", TairUniform, t,
+            "boundary condition " + type() + " on patch '" + patch().name()
+          + "' of field " + internalField().name()
+        );
+    }
+
     scalarField pw(Tp.size());
     forAll(pw, facei)
     {
         const scalar Tair =
-            airTemperature_.valid() ? airTemperature_->value(t) : Tp[facei];
+            airTemperature_.valid() ? TairUniform : Tp[facei];
         pw[facei] = RH*medium.kelvin().saturationPressure().pSat(Tair);
     }
     operator==(pw);

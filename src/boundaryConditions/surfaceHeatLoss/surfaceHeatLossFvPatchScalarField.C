@@ -8,7 +8,28 @@
 #include "volFields.H"
 #include "physicoChemicalConstants.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::TminPlausible =
+    Foam::checkedRead::minAirTemperature;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::surfaceHeatLossFvPatchScalarField::checkTemperature
+(
+    const word& keyword,
+    const scalar T
+) const
+{
+    checkedRead::checkAirTemperature
+    (
+        dictName_, keyword, T, db().time().timeOutputValue(),
+        "boundary condition " + type() + " on patch '" + patch().name()
+      + "' of field " + internalField().name()
+    );
+}
+
 
 void Foam::surfaceHeatLossFvPatchScalarField::checkRange
 (
@@ -53,10 +74,10 @@ void Foam::surfaceHeatLossFvPatchScalarField::values
     Tsky = Tsky_.valid() ? Tsky_->value(t) : Tair;
 
     checkRange("h", h, checkedRead::nonNegative(), true);
-    checkRange("Tair", Tair, checkedRead::positive(), true);
+    checkTemperature("Tair", Tair);
     if (Tsky_.valid())
     {
-        checkRange("Tsky", Tsky, checkedRead::nonNegative(), true);
+        checkTemperature("Tsky", Tsky);
     }
 }
 
@@ -137,6 +158,27 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     kappaName_(dict.getOrDefault<word>("kappa", "kappa")),
     dictName_(dict.name())
 {
+    // Unknown keywords (a misspelt 'emissivity' would switch radiation
+    // off): the standard ones, those written for a restart, the
+    // Function1s' and this condition's
+    {
+        wordList allowed(checkedRead::patchFieldKeywords());
+        allowed.append
+        (
+            wordList({"refValue", "refGradient", "valueFraction"})
+        );
+        allowed.append(checkedRead::function1Keywords(dict, "h"));
+        allowed.append(checkedRead::function1Keywords(dict, "Tair"));
+        allowed.append(checkedRead::function1Keywords(dict, "Tsky"));
+        allowed.append(wordList({"emissivity", "kappa"}));
+        checkedRead::checkKeywords
+        (
+            dict, allowed,
+            "boundary condition " + type() + " on patch '" + p.name()
+          + "' of field " + iF.name()
+        );
+    }
+
     if (dict.found("Tsky"))
     {
         Tsky_ = Function1<scalar>::New("Tsky", dict);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "effectiveConductivityModel.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -34,10 +35,15 @@ Foam::effectiveConductivityModel::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<effectiveConductivityModel>
+    autoPtr<effectiveConductivityModel> model
     (
         cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
     );
+
+    // Unknown keywords of its coefficients sub-dictionary
+    checkedRead::checkCoeffs(dict, "conductivityModel", model());
+
+    return model;
 }
 
 // ************************************************************************* //

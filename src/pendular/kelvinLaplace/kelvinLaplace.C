@@ -38,6 +38,25 @@ Foam::kelvinLaplace::kelvinLaplace(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::kelvinLaplace::keywords(const dictionary& dict) const
+{
+    wordList keys({"rhoL", "Mw", "R"});
+    keys.append
+    (
+        checkedRead::modelKeywords(dict, "surfaceTensionLaw", *sigma_)
+    );
+    keys.append
+    (
+        checkedRead::modelKeywords(dict, "saturationPressureLaw", *pSat_)
+    );
+    keys.append
+    (
+        checkedRead::modelKeywords(dict, "meniscusModel", *meniscus_)
+    );
+    return keys;
+}
+
+
 Foam::scalar Foam::kelvinLaplace::lnRelativeHumidity
 (
     const scalar alphaL,

@@ -45,6 +45,45 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     permeability_(gasPermeabilityModel::New(*this)),
     conductivity_(effectiveConductivityModel::New(*this))
 {
+    // Unknown keywords: a misspelt one would silently take its default
+    {
+        wordList allowed
+        ({
+            "porosity", "rhoSolid", "CpSolid", "kappaSolid", "CpLiquid",
+            "kappaLiquid", "kappaGas", "CpAir", "Ma", "CpVapour",
+            "latentHeat", "latentHeatTemperature", "vapourDiffusivity",
+            "gasViscosity", "tortuosity", "waterModel", "nonEquilibriumCoeffs"
+        });
+        if (!isDict("nonEquilibriumCoeffs"))
+        {
+            allowed.append("relaxationFactor");
+        }
+        else
+        {
+            checkedRead::checkKeywords
+            (
+                subDict("nonEquilibriumCoeffs"),
+                wordList({"relaxationFactor"})
+            );
+        }
+        allowed.append(kelvin_.keywords(*this));
+        allowed.append
+        (
+            checkedRead::modelKeywords
+            (
+                *this, "gasPermeabilityModel", permeability_()
+            )
+        );
+        allowed.append
+        (
+            checkedRead::modelKeywords
+            (
+                *this, "conductivityModel", conductivity_()
+            )
+        );
+        checkedRead::checkKeywords(*this, allowed);
+    }
+
     const auto positive = checkedRead::positive();
     const dimensionSet dimCp(dimEnergy/dimMass/dimTemperature);
     const dimensionSet dimKappa(dimPower/dimLength/dimTemperature);

@@ -610,13 +610,17 @@ void levenbergMarquardt::computeStatistics
             res.lowerConfidence(j) = p(j) - res.tQuantile*res.standardErrors(j);
             res.upperConfidence(j) = p(j) + res.tQuantile*res.standardErrors(j);
         }
+        // The correlation of the estimates is that of (J^T J)^-1 whatever
+        // s^2 is: from covS when s^2 = 0 (a zero-residual fit: zero
+        // covariance, zero-width intervals, and 0/0 here would trap)
+        const bool zeroS2 = !(res.sigma2 > 0);
+        const Matrix& C = zeroS2 ? covS : res.covariance;
         for (int i = 0; i < n_; ++i)
         {
             for (int j = 0; j < n_; ++j)
             {
-                res.correlation(i, j) =
-                    res.covariance(i, j)
-                   /(res.standardErrors(i)*res.standardErrors(j));
+                const double d = std::sqrt(C(i, i)*C(j, j));
+                res.correlation(i, j) = d > 0 ? C(i, j)/d : nan;
             }
         }
     }

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasPermeabilityModel.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -28,10 +29,15 @@ Foam::gasPermeabilityModel::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<gasPermeabilityModel>
+    autoPtr<gasPermeabilityModel> model
     (
         cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
     );
+
+    // Unknown keywords of its coefficients sub-dictionary
+    checkedRead::checkCoeffs(dict, "gasPermeabilityModel", model());
+
+    return model;
 }
 
 // ************************************************************************* //

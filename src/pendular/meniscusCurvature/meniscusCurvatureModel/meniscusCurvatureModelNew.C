@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meniscusCurvatureModel.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -28,10 +29,15 @@ Foam::meniscusCurvatureModel::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<meniscusCurvatureModel>
+    autoPtr<meniscusCurvatureModel> model
     (
         cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
     );
+
+    // Unknown keywords of its coefficients sub-dictionary
+    checkedRead::checkCoeffs(dict, "meniscusModel", model());
+
+    return model;
 }
 
 // ************************************************************************* //

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "saturationPressureLaw.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -28,10 +29,15 @@ Foam::saturationPressureLaw::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<saturationPressureLaw>
+    autoPtr<saturationPressureLaw> model
     (
         cstrIter()(dict.optionalSubDict(lawType + "Coeffs"))
     );
+
+    // Unknown keywords of its coefficients sub-dictionary
+    checkedRead::checkCoeffs(dict, "saturationPressureLaw", model());
+
+    return model;
 }
 
 // ************************************************************************* //

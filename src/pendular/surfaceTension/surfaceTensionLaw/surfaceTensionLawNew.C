@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "surfaceTensionLaw.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -28,10 +29,15 @@ Foam::surfaceTensionLaw::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<surfaceTensionLaw>
+    autoPtr<surfaceTensionLaw> model
     (
         cstrIter()(dict.optionalSubDict(lawType + "Coeffs"))
     );
+
+    // Unknown keywords of its coefficients sub-dictionary
+    checkedRead::checkCoeffs(dict, "surfaceTensionLaw", model());
+
+    return model;
 }
 
 // ************************************************************************* //
