@@ -24,16 +24,21 @@ Description
     count. TMax, the maximum temperature reached in each cell, is written
     with T and the liquid water content.
 
-    Controls:
+    Controls (adaptiveTimeStepControls: read and range-checked before the
+    first step):
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
         system/fvSolution:   nonlinear { maxIter; residualTol; TTol; }
+    T must be above
+    0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "porousMedium.H"
 #include "andersonAcceleration.H"
+#include "adaptiveTimeStepControls.H"
+#include "temperatureCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -48,6 +53,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     #include "createMesh.H"
+    #include "createControls.H"
     #include "createFields.H"
     #include "createEnergyBalance.H"
 
@@ -56,7 +62,10 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
-        #include "setAdaptiveDeltaT.H"
+        stepControls.setDeltaT
+        (
+            runTime, lastDeltaT, lastMaxChange, lastIterations
+        );
 
         ++runTime;
 

@@ -38,10 +38,12 @@ Description
     gas leaving carries the cell's composition and enthalpy, the gas
     entering the atmosphere's.
 
-    Controls:
+    Controls (adaptiveTimeStepControls: read and range-checked before the
+    first step):
         system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
                             maxDeltaTemperature, maxDeltaTGrowth
         system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol; }
+    T must be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 
@@ -49,6 +51,8 @@ Description
 #include "pendularMedium.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
+#include "adaptiveTimeStepControls.H"
+#include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
 
@@ -73,7 +77,10 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        #include "setAdaptiveDeltaT.H"
+        stepControls.setDeltaT
+        (
+            runTime, lastDeltaT, lastMaxChange, lastIterations
+        );
 
         ++runTime;
 
