@@ -28,8 +28,10 @@ Description
     first step):
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
-        system/fvSolution:   nonlinear { maxIter; residualTol; TTol; }
-    T must be above
+        system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
+                             balanceTolerance; }
+    An energy balance missing balanceTolerance (default 1e-6) prints a
+    warning and makes the exit status 1 (balanceMonitor). T must be above
     0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
@@ -38,6 +40,7 @@ Description
 #include "porousMedium.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
+#include "balanceMonitor.H"
 #include "temperatureCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -92,7 +95,12 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero if an energy balance missed balanceTolerance. The status
+    // returned by main is lost in v1912 (argList's destructor calls
+    // Pstream::exit(0)): exit here
+    const int status = balances.exitStatus();
+    Pstream::exit(status);
+    return status;
 }
 
 

@@ -42,8 +42,11 @@ Description
     first step):
         system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
                             maxDeltaTemperature, maxDeltaTGrowth
-        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol; }
-    T must be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
+        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol;
+                            balanceTolerance; }
+    A water, air or energy balance missing balanceTolerance (default 1e-6)
+    prints a warning and makes the exit status 1 (balanceMonitor). T must
+    be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 
@@ -52,6 +55,7 @@ Description
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
+#include "balanceMonitor.H"
 #include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
@@ -100,7 +104,12 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero if a balance missed balanceTolerance. The status returned
+    // by main is lost in v1912 (argList's destructor calls
+    // Pstream::exit(0)): exit here
+    const int status = balances.exitStatus();
+    Pstream::exit(status);
+    return status;
 }
 
 
