@@ -4,6 +4,22 @@
 
 #include "adaptiveTimeStepControls.H"
 #include "checkedRead.H"
+#include <limits>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    // (lower, inf): checkedRead::positive() stops at GREAT (1e15), and
+    // maxDeltaT's default is GREAT
+    Foam::validRange above(const Foam::scalar lower)
+    {
+        return Foam::validRange
+        {
+            lower, std::numeric_limits<Foam::scalar>::infinity(), true, true
+        };
+    }
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -44,17 +60,17 @@ void Foam::adaptiveTimeStepControls::read()
     checkedRead::check
     (
         controlDict, "deltaT", controlDict.get<scalar>("deltaT"),
-        checkedRead::positive()
+        above(0)
     );
     checkedRead::check
     (
-        controlDict, "deltaT", runTime.deltaTValue(), checkedRead::positive()
+        controlDict, "deltaT", runTime.deltaTValue(), above(0)
     );
 
     maxDeltaT_ = controlDict.getOrDefault<scalar>("maxDeltaT", GREAT);
     checkedRead::check
     (
-        controlDict, "maxDeltaT", maxDeltaT_, checkedRead::positive()
+        controlDict, "maxDeltaT", maxDeltaT_, above(0)
     );
 
     minDeltaT_ = controlDict.getOrDefault<scalar>("minDeltaT", 1e-6);
@@ -75,7 +91,7 @@ void Foam::adaptiveTimeStepControls::read()
     checkedRead::check
     (
         controlDict, "maxDeltaTemperature", maxDeltaTemperature_,
-        checkedRead::positive()
+        above(0)
     );
 
     maxDeltaTGrowth_ =
@@ -86,7 +102,7 @@ void Foam::adaptiveTimeStepControls::read()
     checkedRead::check
     (
         controlDict, "maxDeltaTGrowth", maxDeltaTGrowth_,
-        validRange{1, GREAT, true, true}
+        above(1)
     );
 
     // endTime after the start. A run restarted at its end (startFrom

@@ -4,6 +4,7 @@
 
 #include "balanceMonitor.H"
 #include "checkedRead.H"
+#include <limits>
 #include "Time.H"
 #include "OStringStream.H"
 
@@ -24,7 +25,7 @@ Foam::balanceMonitor::balanceMonitor(const fvMesh& mesh)
     checkedRead::check
     (
         nonlinearDict, "balanceTolerance", tolerance_,
-        checkedRead::positive()
+        validRange{0, std::numeric_limits<scalar>::infinity(), true, true}
     );
     strict_ = nonlinearDict.getOrDefault<bool>("strictBalance", true);
 }
