@@ -31,7 +31,8 @@ Description
         system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
                              balanceTolerance; }
     An energy balance missing balanceTolerance (default 1e-6) prints a
-    warning and makes the exit status 1 (balanceMonitor). T must be above
+    warning and makes the exit status 1 (balanceMonitor; strictBalance
+    false: warning only). T must be above
     0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/

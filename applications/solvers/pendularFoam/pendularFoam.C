@@ -45,7 +45,8 @@ Description
         system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol;
                             balanceTolerance; }
     A water, air or energy balance missing balanceTolerance (default 1e-6)
-    prints a warning and makes the exit status 1 (balanceMonitor). T must
+    prints a warning (balanceMonitor); with strictBalance true (default
+    false) it makes the exit status 1. T must
     be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/

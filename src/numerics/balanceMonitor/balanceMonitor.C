@@ -10,11 +10,15 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::balanceMonitor::balanceMonitor(const fvMesh& mesh)
+Foam::balanceMonitor::balanceMonitor
+(
+    const fvMesh& mesh,
+    const bool defaultStrict
+)
 :
     mesh_(mesh),
     tolerance_(1e-6),
-    strict_(true),
+    strict_(defaultStrict),
     nMissed_(0),
     firstMissed_()
 {
@@ -27,7 +31,7 @@ Foam::balanceMonitor::balanceMonitor(const fvMesh& mesh)
         nonlinearDict, "balanceTolerance", tolerance_,
         validRange{0, std::numeric_limits<scalar>::infinity(), true, true}
     );
-    strict_ = nonlinearDict.getOrDefault<bool>("strictBalance", true);
+    strict_ = nonlinearDict.getOrDefault<bool>("strictBalance", defaultStrict);
 }
 
 
