@@ -29,11 +29,11 @@ Description
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
         system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
-                             balanceTolerance; }
+                             balanceTolerance; strictBalance; }
     An energy balance missing balanceTolerance (default 1e-6) prints a
     warning and makes the exit status 1 (balanceMonitor; strictBalance
-    false: warning only). T must be above
-    0 K (and the initial soil at or above 200 K: temperatureCheck).
+    false: warning only). T must be above 0 K, and the initial soil at or
+    above 200 K (temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 

@@ -43,7 +43,7 @@ Description
         system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
                             maxDeltaTemperature, maxDeltaTGrowth
         system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol;
-                            balanceTolerance; }
+                            balanceTolerance; strictBalance; }
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
