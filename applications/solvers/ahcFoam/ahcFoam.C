@@ -24,10 +24,16 @@ Description
     count. TMax, the maximum temperature reached in each cell, is written
     with T and the liquid water content.
 
-    Controls:
+    Controls (adaptiveTimeStepControls: read and range-checked before the
+    first step):
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
-        system/fvSolution:   nonlinear { maxIter; residualTol; TTol; }
+        system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
+                             balanceTolerance; strictBalance; }
+    An energy balance missing balanceTolerance (default 1e-6) prints a
+    warning and makes the exit status 1 (balanceMonitor; strictBalance
+    false: warning only). T must be above 0 K, and the initial soil at or
+    above 200 K (temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 
@@ -35,6 +41,9 @@ Description
 #include "porousMedium.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
+#include "adaptiveTimeStepControls.H"
+#include "balanceMonitor.H"
+#include "temperatureCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -49,6 +58,8 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     #include "createMesh.H"
+    #include "createControls.H"
+    #include "checkNonlinearKeywords.H"
     #include "createFields.H"
     #include "createEnergyBalance.H"
 
@@ -57,8 +68,10 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
-        #include "checkNonlinearKeywords.H"
-        #include "setAdaptiveDeltaT.H"
+        stepControls.setDeltaT
+        (
+            runTime, lastDeltaT, lastMaxChange, lastIterations
+        );
 
         ++runTime;
 
@@ -85,7 +98,12 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero if an energy balance missed balanceTolerance. The status
+    // returned by main is lost in v1912 (argList's destructor calls
+    // Pstream::exit(0)): exit here
+    const int status = balances.exitStatus();
+    Pstream::exit(status);
+    return status;
 }
 
 

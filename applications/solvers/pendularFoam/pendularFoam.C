@@ -38,10 +38,16 @@ Description
     gas leaving carries the cell's composition and enthalpy, the gas
     entering the atmosphere's.
 
-    Controls:
+    Controls (adaptiveTimeStepControls: read and range-checked before the
+    first step):
         system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
                             maxDeltaTemperature, maxDeltaTGrowth
-        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol; }
+        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol;
+                            balanceTolerance; strictBalance; }
+    A water, air or energy balance missing balanceTolerance (default 1e-6)
+    prints a warning (balanceMonitor); with strictBalance true (default
+    false) it makes the exit status 1. T must
+    be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
 
 \*---------------------------------------------------------------------------*/
 
@@ -49,6 +55,9 @@ Description
 #include "pendularMedium.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
+#include "adaptiveTimeStepControls.H"
+#include "balanceMonitor.H"
+#include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
 
@@ -74,7 +83,10 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        #include "setAdaptiveDeltaT.H"
+        stepControls.setDeltaT
+        (
+            runTime, lastDeltaT, lastMaxChange, lastIterations
+        );
 
         ++runTime;
 
@@ -94,7 +106,12 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero if a balance missed balanceTolerance. The status returned
+    // by main is lost in v1912 (argList's destructor calls
+    // Pstream::exit(0)): exit here
+    const int status = balances.exitStatus();
+    Pstream::exit(status);
+    return status;
 }
 
 

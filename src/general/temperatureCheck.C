@@ -1,0 +1,93 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "temperatureCheck.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+void Foam::temperatureCheck::initial(const volScalarField& T)
+{
+    dictionary fieldDict;
+    fieldDict.name() = T.objectPath();
+
+    forAll(T, celli)
+    {
+        if (!(T[celli] > 0))
+        {
+            FatalIOErrorInFunction(fieldDict)
+                << "Field '" << T.name() << "' (keyword 'internalField') = "
+                << T[celli] << " K in cell " << celli << " is outside its"
+                << " valid range (0, inf): at or below absolute zero, in"
+                << " file " << T.objectPath() << nl
+                << exit(FatalIOError);
+        }
+        if (T[celli] < celsiusThreshold)
+        {
+            FatalIOErrorInFunction(fieldDict)
+                << "Field '" << T.name() << "' (keyword 'internalField') = "
+                << T[celli] << " K in cell " << celli << " is below "
+                << celsiusThreshold << " K (" << celsiusThreshold - 273.15
+                << " C), colder than any soil: was it given in Celsius?"
+                << " T is in kelvin: " << T[celli] << " C is "
+                << T[celli] + 273.15 << " K. Valid range ["
+                << celsiusThreshold << ", inf) K, in file "
+                << T.objectPath() << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    forAll(T.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
+        if (Tp.coupled())
+        {
+            continue;
+        }
+        forAll(Tp, facei)
+        {
+            if (!(Tp[facei] > 0))
+            {
+                FatalIOErrorInFunction(fieldDict)
+                    << "Field '" << T.name() << "' on patch '"
+                    << Tp.patch().name() << "' (boundaryField "
+                    << Tp.patch().name() << ", type " << Tp.type()
+                    << ") = " << Tp[facei] << " K at t = "
+                    << T.time().timeName() << " s, face " << facei
+                    << ": outside its valid range (0, inf), at or below"
+                    << " absolute zero, in file " << T.objectPath() << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::temperatureCheck::boundary(const volScalarField& T)
+{
+    forAll(T.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
+        if (Tp.coupled())
+        {
+            continue;
+        }
+        forAll(Tp, facei)
+        {
+            if (!(Tp[facei] > 0))
+            {
+                FatalErrorInFunction
+                    << "Temperature on patch '" << Tp.patch().name()
+                    << "' (boundaryField " << Tp.patch().name() << " of "
+                    << T.name() << ", type " << Tp.type() << ") = " << Tp[facei] << " K at t = "
+                    << T.time().timeName() << " s, face " << facei
+                    << ": at or below absolute zero (valid range (0, inf)"
+                    << " K). Check the temperature history of patch '"
+                    << Tp.patch().name() << "' (a table going below 0 K?)"
+                    << nl << exit(FatalError);
+            }
+        }
+    }
+}
+
+// ************************************************************************* //

@@ -1,0 +1,170 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "adaptiveTimeStepControls.H"
+#include "checkedRead.H"
+#include <limits>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    // (lower, inf): checkedRead::positive() stops at GREAT (1e15), and
+    // maxDeltaT's default is GREAT
+    Foam::validRange above(const Foam::scalar lower)
+    {
+        return Foam::validRange
+        {
+            lower, std::numeric_limits<Foam::scalar>::infinity(), true, true
+        };
+    }
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::adaptiveTimeStepControls::adaptiveTimeStepControls
+(
+    const fvMesh& mesh,
+    const scalar defaultMaxDeltaTemperature,
+    const scalar defaultMaxDeltaTGrowth,
+    const label defaultMaxIter
+)
+:
+    mesh_(mesh),
+    defaultMaxDeltaTemperature_(defaultMaxDeltaTemperature),
+    defaultMaxDeltaTGrowth_(defaultMaxDeltaTGrowth),
+    defaultMaxIter_(defaultMaxIter),
+    adjustTimeStep_(true),
+    maxDeltaT_(GREAT),
+    minDeltaT_(1e-6),
+    maxDeltaTemperature_(defaultMaxDeltaTemperature),
+    maxDeltaTGrowth_(defaultMaxDeltaTGrowth),
+    maxIter_(defaultMaxIter)
+{
+    read();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::adaptiveTimeStepControls::read()
+{
+    const Time& runTime = mesh_.time();
+    const dictionary& controlDict = runTime.controlDict();
+
+    adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", true);
+
+    // The first step: the controlDict's entry, and the step the run starts
+    // with (a restart takes it from its time directory)
+    checkedRead::check
+    (
+        controlDict, "deltaT", controlDict.get<scalar>("deltaT"),
+        above(0)
+    );
+    checkedRead::check
+    (
+        controlDict, "deltaT", runTime.deltaTValue(), above(0)
+    );
+
+    maxDeltaT_ = controlDict.getOrDefault<scalar>("maxDeltaT", GREAT);
+    checkedRead::check
+    (
+        controlDict, "maxDeltaT", maxDeltaT_, above(0)
+    );
+
+    minDeltaT_ = controlDict.getOrDefault<scalar>("minDeltaT", 1e-6);
+    if (!(minDeltaT_ > 0 && minDeltaT_ <= maxDeltaT_))
+    {
+        FatalIOErrorInFunction(controlDict)
+            << "Keyword 'minDeltaT' = " << minDeltaT_
+            << " is outside its valid range (0, maxDeltaT = " << maxDeltaT_
+            << "] in dictionary " << controlDict.name() << nl
+            << exit(FatalIOError);
+    }
+
+    maxDeltaTemperature_ =
+        controlDict.getOrDefault<scalar>
+        (
+            "maxDeltaTemperature", defaultMaxDeltaTemperature_
+        );
+    checkedRead::check
+    (
+        controlDict, "maxDeltaTemperature", maxDeltaTemperature_,
+        above(0)
+    );
+
+    maxDeltaTGrowth_ =
+        controlDict.getOrDefault<scalar>
+        (
+            "maxDeltaTGrowth", defaultMaxDeltaTGrowth_
+        );
+    checkedRead::check
+    (
+        controlDict, "maxDeltaTGrowth", maxDeltaTGrowth_,
+        above(1)
+    );
+
+    // endTime after the start. A run restarted at its end (startFrom
+    // latestTime, the last time directory at endTime) has nothing to do
+    const scalar startTime = runTime.startTime().value();
+    const scalar endTime = runTime.endTime().value();
+    const bool finishedRestart =
+        endTime == startTime
+     && controlDict.getOrDefault<word>("startFrom", "latestTime")
+     == "latestTime";
+    if (!(endTime > startTime) && !finishedRestart)
+    {
+        FatalIOErrorInFunction(controlDict)
+            << "Keyword 'endTime' = " << endTime
+            << " is outside its valid range (startTime = " << startTime
+            << ", inf) in dictionary " << controlDict.name()
+            << ": nothing to run" << nl
+            << exit(FatalIOError);
+    }
+
+    // Nonlinear iterations (system/fvSolution)
+    const dictionary& nonlinearDict =
+        mesh_.solutionDict().optionalSubDict("nonlinear");
+    maxIter_ = nonlinearDict.getOrDefault<label>("maxIter", defaultMaxIter_);
+    if (maxIter_ < 1)
+    {
+        FatalIOErrorInFunction(nonlinearDict)
+            << "Keyword 'maxIter' = " << maxIter_
+            << " is outside its valid range [1, inf) in dictionary "
+            << nonlinearDict.name() << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::adaptiveTimeStepControls::setDeltaT
+(
+    Time& runTime,
+    const scalar lastDeltaT,
+    const scalar lastMaxChange,
+    const label lastIterations
+) const
+{
+    if (!adjustTimeStep_ || runTime.timeIndex() <= runTime.startTimeIndex())
+    {
+        return;
+    }
+
+    scalar factor =
+        min
+        (
+            maxDeltaTGrowth_,
+            maxDeltaTemperature_/max(lastMaxChange, SMALL)
+        );
+
+    if (lastIterations > maxIter_/2)
+    {
+        factor = min(factor, 0.7);
+    }
+
+    runTime.setDeltaT(min(factor*lastDeltaT, maxDeltaT_));
+}
+
+
+// ************************************************************************* //
