@@ -9,146 +9,18 @@
 #include "DynamicList.H"
 #include "OSspecific.H"
 #include "OStringStream.H"
+#include "numericTable.H"
 
 #include <algorithm>
-#include <cerrno>
-#include <cfenv>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <fstream>
 #include <string>
-#include <vector>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
-
-// Spaces, tabs and a Windows '\r' trimmed at both ends; surrounding double
-// quotes removed (spreadsheets quote fields)
-std::string trimField(const std::string& s)
-{
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string::npos)
-    {
-        return std::string();
-    }
-    const auto e = s.find_last_not_of(" \t\r");
-    std::string t(s.substr(b, e - b + 1));
-    if (t.size() >= 2 && t.front() == '"' && t.back() == '"')
-    {
-        t = t.substr(1, t.size() - 2);
-    }
-    return t;
-}
-
-
-// The fields of a line: at each separator, or at runs of spaces and tabs
-// for separator '\0'
-std::vector<std::string> splitLine(const std::string& line, const char sep)
-{
-    std::vector<std::string> fields;
-    std::size_t pos = 0;
-
-    if (sep == '\0')
-    {
-        while (true)
-        {
-            const auto b = line.find_first_not_of(" \t\r", pos);
-            if (b == std::string::npos)
-            {
-                break;
-            }
-            const auto e = line.find_first_of(" \t\r", b);
-            fields.push_back
-            (
-                trimField
-                (
-                    line.substr(b, e == std::string::npos ? e : e - b)
-                )
-            );
-            if (e == std::string::npos)
-            {
-                break;
-            }
-            pos = e;
-        }
-    }
-    else
-    {
-        while (true)
-        {
-            const auto e = line.find(sep, pos);
-            fields.push_back
-            (
-                trimField
-                (
-                    line.substr(pos, e == std::string::npos ? e : e - pos)
-                )
-            );
-            if (e == std::string::npos)
-            {
-                break;
-            }
-            pos = e + 1;
-        }
-    }
-
-    return fields;
-}
-
-
-// A whole field read as a number (strtod: also nan and inf, caught later).
-// A number beyond the range of double (1e400) gives +-inf, also caught
-// later: strtod raises FE_OVERFLOW for it, which OpenFOAM traps
-// (FOAM_SIGFPE) and would end in a crash with a stack trace instead of an
-// error naming the line, so the traps are held while it reads
-bool parseNumber(const std::string& s, Foam::scalar& x)
-{
-    if (s.empty())
-    {
-        return false;
-    }
-    const char* begin = s.c_str();
-    char* end = nullptr;
-    errno = 0;
-    std::fenv_t fenv;
-    std::feholdexcept(&fenv);
-    const double v = std::strtod(begin, &end);
-    std::fesetenv(&fenv);
-    if (end == begin || end != begin + s.size())
-    {
-        return false;
-    }
-    x = v;
-    return true;
-}
-
-
-// A line to skip anywhere: blank, or a '#' comment
-bool skipLine(const std::string& line)
-{
-    const auto b = line.find_first_not_of(" \t\r");
-    return b == std::string::npos || line[b] == '#';
-}
-
-
-// The line for messages (without a '\r', cut if long)
-std::string showLine(const std::string& line)
-{
-    std::string s(line);
-    if (!s.empty() && s.back() == '\r')
-    {
-        s.pop_back();
-    }
-    if (s.size() > 120)
-    {
-        s = s.substr(0, 117) + "...";
-    }
-    return s;
-}
-
 
 // Keywords of the patch entry
 const char* const knownKeywords[] =
@@ -207,9 +79,13 @@ Foam::string Foam::fireTemperatureFvPatchScalarField::describeSource() const
 
 std::string Foam::fireTemperatureFvPatchScalarField::separatorName() const
 {
-    if (separator_ == '\0')
+    if (separator_ == numericTable::whitespace)
     {
         return "whitespace";
+    }
+    else if (separator_ == numericTable::automatic)
+    {
+        return "auto";
     }
     else if (separator_ == '\t')
     {
@@ -320,7 +196,11 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
 
         if (s == "whitespace" || s == "space" || s == " ")
         {
-            separator_ = '\0';
+            separator_ = numericTable::whitespace;
+        }
+        else if (s == "auto" || s == "automatic")
+        {
+            separator_ = numericTable::automatic;
         }
         else if (s == "tab" || s == "\\t" || s == "\t")
         {
@@ -335,8 +215,9 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
             FatalIOErrorInFunction(dict)
                 << "Keyword 'separator' = " << tok << where().c_str()
                 << " is not valid: give one character in quotes"
-                << " (\",\" \";\"), tab, or whitespace (runs of spaces and"
-                << " tabs)" << nl
+                << " (\",\" \";\"), tab, whitespace (runs of spaces and"
+                << " tabs), or auto (per line: ',' if it has one, else ';',"
+                << " else whitespace)" << nl
                 << exit(FatalIOError);
         }
     }
@@ -550,100 +431,45 @@ void Foam::fireTemperatureFvPatchScalarField::readFile
             << patch().name() << "' of field " << internalField().name()
             << nl << exit(FatalIOError);
     }
+    is.close();
 
     times_.clear();
     temperatures_.clear();
     lines_.clear();
 
-    const label nNeeded = max(timeColumn_, temperatureColumn_) + 1;
+    // The common table reader (src/general/numericTable): malformed lines,
+    // non-finite numbers and a file without data end in a FatalIOError
+    // naming the file and line
+    numericTable::settings s;
+    s.separator = separator_;
+    s.headerLines = headerLines_;
+    s.numericColumns = labelList({timeColumn_, temperatureColumn_});
+    s.roles.resize(max(timeColumn_, temperatureColumn_) + 1);
+    s.roles[timeColumn_] = "a time";
+    s.roles[temperatureColumn_] = "a temperature";
+    s.columnsDescription =
+        "timeColumn " + std::to_string(timeColumn_)
+      + " and temperatureColumn " + std::to_string(temperatureColumn_);
+    s.what = "the fire history file";
+    s.context = describeSource();
 
-    std::string line;
-    label lineNo = 0;
-    label nHeader = 0;
-    bool inData = false;
+    const numericTable table(file_, s);
 
-    while (std::getline(is, line))
+    // Units, absolute zero, increasing times (in s: also for the table)
+    forAll(table, rowi)
     {
-        ++lineNo;
-
-        if (headerLines_ >= 0 && lineNo <= headerLines_)
-        {
-            ++nHeader;
-            continue;
-        }
-        if (skipLine(line))
-        {
-            continue;
-        }
-
-        const std::vector<std::string> fields(splitLine(line, separator_));
-
-        scalar tau = 0, theta = 0;
-        const bool enough = label(fields.size()) >= nNeeded;
-        const bool okTime = enough && parseNumber(fields[timeColumn_], tau);
-        const bool okTemp =
-            enough && parseNumber(fields[temperatureColumn_], theta);
-
-        if (okTime && okTemp)
-        {
-            inData = true;
-            addRow(tau, theta, lineNo, file_, lineNo);
-            continue;
-        }
-
-        if (headerLines_ < 0 && !inData)
-        {
-            // A header line at the top
-            ++nHeader;
-            continue;
-        }
-
-        // A malformed data line
-        OStringStream why;
-        if (!enough)
-        {
-            why << "has " << label(fields.size()) << " column(s), but"
-                << " timeColumn " << timeColumn_ << " and temperatureColumn "
-                << temperatureColumn_ << " need at least " << nNeeded;
-        }
-        else
-        {
-            const label bad = okTime ? temperatureColumn_ : timeColumn_;
-            why << "has " << (okTime ? "a temperature" : "a time")
-                << " (column " << bad << ") '" << fields[bad].c_str()
-                << "' that is " << (fields[bad].empty() ? "empty" : "not a number");
-        }
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
-            << "Line " << lineNo << " of the fire history file "
-            << why.str().c_str() << " (separator "
-            << separatorName().c_str()
-            << (headerLines_ < 0 ? ", header lines detected: " : ", headerLines ")
-            << nHeader << "):" << nl
-            << "    " << showLine(line).c_str() << nl
-            << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
+        const label line = table.line(rowi);
+        addRow
+        (
+            table.value(rowi, timeColumn_),
+            table.value(rowi, temperatureColumn_),
+            line,
+            file_,
+            line
+        );
     }
 
-    if (is.bad())
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
-            << "Error reading the fire history file after line " << lineNo
-            << nl << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
-    }
-
-    if (times_.empty())
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
-            << "No data row in the fire history file: " << lineNo
-            << " line(s), " << nHeader << " header line(s) "
-            << (headerLines_ < 0 ? "(non-numeric at the top) " : "")
-            << "skipped; a row needs numbers in timeColumn " << timeColumn_
-            << " and temperatureColumn " << temperatureColumn_
-            << " (separator " << separatorName().c_str() << ")" << nl << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
-    }
-
+    const label nHeader = table.nHeader();
     printSummary(nHeader);
 }
 
@@ -994,9 +820,13 @@ void Foam::fireTemperatureFvPatchScalarField::write(Ostream& os) const
         (
             "temperatureColumn", 1, temperatureColumn_
         );
-        if (separator_ == '\0')
+        if (separator_ == numericTable::whitespace)
         {
             os.writeEntry("separator", word("whitespace"));
+        }
+        else if (separator_ == numericTable::automatic)
+        {
+            os.writeEntry("separator", word("auto"));
         }
         else if (separator_ == '\t')
         {
