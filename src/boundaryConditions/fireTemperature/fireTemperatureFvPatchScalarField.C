@@ -101,10 +101,11 @@ Foam::string Foam::fireTemperatureFvPatchScalarField::describeTime
 ) const
 {
     OStringStream os;
-    os  << "t = " << times_[rowi] << " s";
+    const scalar t = history_.times()[rowi];
+    os  << "t = " << t << " s";
     if (timeUnit_ != "s" || timeOffset_ != 0)
     {
-        os  << " (" << (times_[rowi] + timeOffset_)/timeFactor() << ' '
+        os  << " (" << (t + timeOffset_)/timeFactor() << ' '
             << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
             << ")";
     }
@@ -338,37 +339,50 @@ void Foam::fireTemperatureFvPatchScalarField::addRow
     }
 
     const scalar t = timeFactor()*tau - timeOffset_;
-    const label n = times_.size();
+    const temperatureHistory::check result = history_.append(t, T, line);
 
-    if (n && !(t > times_[n - 1]))
+    if
+    (
+        result == temperatureHistory::check::sameTime
+     || result == temperatureHistory::check::timeBefore
+    )
     {
+        const label n = history_.size();
+        const scalar tPrev = history_.times()[n - 1];
         OStringStream prev;
         if (file_.size())
         {
-            prev << "line " << lines_[n - 1];
+            prev << "line " << history_.line(n - 1);
         }
         else
         {
-            prev << "row " << lines_[n - 1];
+            prev << "row " << history_.line(n - 1);
         }
-        const scalar prevTau = (times_[n - 1] + timeOffset_)/timeFactor();
+        const scalar prevTau = (tPrev + timeOffset_)/timeFactor();
 
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
             << "Times of the fire history do not increase: "
             << at.str().c_str() << " has time " << tau << ' ' << timeUnit_
             << " (t = " << t << " s), "
-            << (t == times_[n - 1] ? "the same as" : "before") << ' '
+            << (
+                   result == temperatureHistory::check::sameTime
+                 ? "the same as" : "before"
+               ) << ' '
             << prev.str().c_str() << " with time " << prevTau << ' '
-            << timeUnit_ << " (t = " << times_[n - 1] << " s)" << nl
+            << timeUnit_ << " (t = " << tPrev << " s)" << nl
             << "    The times must increase strictly (sort the rows,"
             << " remove duplicate times)" << nl
             << "    in " << describeSource().c_str() << nl
             << exit(FatalIOError);
     }
-
-    times_.append(t);
-    temperatures_.append(T);
-    lines_.append(line);
+    else if (result != temperatureHistory::check::ok)
+    {
+        // (finite values above absolute zero checked above)
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << at.str().c_str() << ": not a valid point of the history"
+            << nl << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -433,9 +447,7 @@ void Foam::fireTemperatureFvPatchScalarField::readFile
     }
     is.close();
 
-    times_.clear();
-    temperatures_.clear();
-    lines_.clear();
+    history_.clear();
 
     // The common table reader (src/general/numericTable): malformed lines,
     // non-finite numbers and a file without data end in a FatalIOError
@@ -495,9 +507,7 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
             << exit(FatalIOError);
     }
 
-    times_.clear();
-    temperatures_.clear();
-    lines_.clear();
+    history_.clear();
 
     forAll(tableEntry_, rowi)
     {
@@ -520,9 +530,10 @@ void Foam::fireTemperatureFvPatchScalarField::printSummary
     const label nHeader
 ) const
 {
-    const label n = times_.size();
-    const scalar Tmin = min(temperatures_);
-    const scalar Tmax = max(temperatures_);
+    const label n = history_.size();
+    const scalarList& times = history_.times();
+    const scalar Tmin = min(history_.temperatures());
+    const scalar Tmax = max(history_.temperatures());
     const scalar off = temperatureUnit_ == "C" ? 273.15 : 0;
 
     OStringStream os;
@@ -531,17 +542,18 @@ void Foam::fireTemperatureFvPatchScalarField::printSummary
         << internalField().name() << ": " << n << " row(s) from ";
     if (file_.size())
     {
-        os  << file_ << " (lines " << lines_.first() << " to "
-            << lines_.last() << ", " << nHeader << " header line(s) skipped)";
+        os  << file_ << " (lines " << history_.line(0) << " to "
+            << history_.line(n - 1) << ", " << nHeader
+            << " header line(s) skipped)";
     }
     else
     {
         os  << "the inline table";
     }
-    os  << nl << "    time " << (times_.first() + timeOffset_)/timeFactor()
-        << " to " << (times_.last() + timeOffset_)/timeFactor() << ' '
+    os  << nl << "    time " << (times.first() + timeOffset_)/timeFactor()
+        << " to " << (times.last() + timeOffset_)/timeFactor() << ' '
         << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
-        << ", t = " << times_.first() << " to " << times_.last()
+        << ", t = " << times.first() << " to " << times.last()
         << " s (timeOffset " << timeOffset_ << " s); T = " << Tmin - off
         << " to " << Tmax - off << ' ' << temperatureUnit_ << " = " << Tmin
         << " to " << Tmax << " K; before the first time: " << beforeStart_
@@ -571,9 +583,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
-    times_(),
-    temperatures_(),
-    lines_(),
+    history_(),
     file_(),
     dictName_(iF.objectPath()),
     dictLine_(-1)
@@ -599,9 +609,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
-    times_(),
-    temperatures_(),
-    lines_(),
+    history_(),
     file_(),
     dictName_(dict.name()),
     dictLine_(dict.startLineNumber())
@@ -660,9 +668,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -688,9 +694,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -715,9 +719,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -732,7 +734,8 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
     const bool check
 ) const
 {
-    const label n = times_.size();
+    const label n = history_.size();
+    const scalarList& times = history_.times();
 
     if (!n)
     {
@@ -741,22 +744,22 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
             << exit(FatalError);
     }
 
-    const bool before = t < times_[0];
-    const bool after = t > times_[n - 1];
+    const bool before = t < times[0];
+    const bool after = t > times[n - 1];
 
     if (check && ((before && beforeStart_ == "error")
                   || (after && afterEnd_ == "error")))
     {
         const label rowi = before ? 0 : n - 1;
         const string source = file_.size() ? string(file_) : string(dictName_);
-        const label line = file_.size() ? lines_[rowi] : dictLine_;
+        const label line = file_.size() ? history_.line(rowi) : dictLine_;
 
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, line)
             << "Time t = " << t << " s is "
             << (before ? "before the start" : "after the end")
             << " of the fire history, whose " << (before ? "first" : "last")
             << ' ' << (file_.size() ? "line" : "row") << ' '
-            << lines_[rowi] << " is at " << describeTime(rowi).c_str()
+            << history_.line(rowi) << " is at " << describeTime(rowi).c_str()
             << ", and " << (before ? "beforeStart" : "afterEnd")
             << " is 'error'" << nl
             << "    (set it to 'hold' to keep the "
@@ -768,27 +771,8 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
             << exit(FatalIOError);
     }
 
-    if (t <= times_[0])
-    {
-        return temperatures_[0];
-    }
-    if (t >= times_[n - 1])
-    {
-        return temperatures_[n - 1];
-    }
-
-    // times_[i] <= t < times_[i+1]
-    const label i =
-        label(std::upper_bound(times_.cbegin(), times_.cend(), t)
-      - times_.cbegin()) - 1;
-
-    if (t == times_[i])
-    {
-        return temperatures_[i];
-    }
-
-    const scalar s = (t - times_[i])/(times_[i + 1] - times_[i]);
-    return temperatures_[i] + s*(temperatures_[i + 1] - temperatures_[i]);
+    // Linear between the rows, exact at them, held outside
+    return history_.value(t);
 }
 
 
