@@ -27,18 +27,27 @@ Description
     The floating-point traps are enabled as in OpenFOAM's solvers
     (FOAM_SIGFPE): reading 1e400 must not raise SIGFPE.
 
+    Also the fire history shared by fireTemperature and hearthDuration
+    (Foam::temperatureHistory, src/general/temperatureHistory): its checks
+    (nan, 0 K, a repeated or earlier time), exact values at the points,
+    linear in between (against the formula), held outside, and its table
+    file read back by the table reader.
+
     testNumericTable -fatal: one uncaught error (1e400 on line 3), for the
     run script to check the real exit path.
 
 \*---------------------------------------------------------------------------*/
 
 #include "numericTable.H"
+#include "temperatureHistory.H"
 #include "error.H"
 #include "OSspecific.H"
 #include "unitChecks.H"
 
 #include <cfenv>
 #include <fstream>
+#include <iterator>
+#include <limits>
 
 using namespace Foam;
 
@@ -469,6 +478,57 @@ void testCollect()
      && n.errors()[0].kind == numericTable::errorKind::noData);
 }
 
+void testTemperatureHistory()
+{
+    section("temperatureHistory: the fire history of fireTemperature and"
+        " hearthDuration");
+
+    typedef temperatureHistory::check check_t;
+    temperatureHistory h;
+    check("append (0 s, 293.15 K)", h.append(0, 293.15, 2) == check_t::ok);
+    check("append (60 s, 973.15 K)", h.append(60, 973.15, 3) == check_t::ok);
+    check("append (61.5 s, 973.15 K)",
+        h.append(61.5, 973.15, 5) == check_t::ok);
+    check("append (200 s, 0.1 K)", h.append(200, 0.1, 6) == check_t::ok);
+    // (a quiet NaN made without an FP operation: the traps are on)
+    const double qnan = std::numeric_limits<double>::quiet_NaN();
+    check("reject a nan time",
+        h.append(qnan, 300, 7) == check_t::notFinite);
+    check("reject 0 K", h.append(300, 0, 7) == check_t::notAboveZero);
+    check("reject -1 K", h.append(300, -1, 7) == check_t::notAboveZero);
+    check("reject a repeated time",
+        h.append(200, 300, 7) == check_t::sameTime);
+    check("reject an earlier time",
+        h.append(100, 300, 7) == check_t::timeBefore);
+    checkAbs("rejected points not appended", h.size(), 4, 0);
+    checkAbs("line of point 2", h.line(2), 5, 0);
+
+    checkAbs("exact at a point (60 s)", h.value(60), 973.15, 0);
+    checkAbs("exact at the last point", h.value(200), 0.1, 0);
+    checkAbs("held before the first point", h.value(-1e9), 293.15, 0);
+    checkAbs("held after the last point", h.value(1e9), 0.1, 0);
+    const scalar t = 17.25;
+    checkRel("linear between (17.25 s)", h.value(t),
+        293.15 + (t - 0)/(60 - 0)*(973.15 - 293.15), 1e-15);
+    checkAbs("constant segment (61 s)", h.value(61), 973.15, 1e-12);
+    const scalar t2 = 123.4;
+    checkRel("linear between (123.4 s)", h.value(t2),
+        973.15 + (t2 - 61.5)/(200 - 61.5)*(0.1 - 973.15), 1e-14);
+
+    // The table file (hearthDuration's constant/fireHistory), as text
+    const fileName f(cwd()/"history.table");
+    h.writeTableFile(f, "a comment\nsecond line", 1000, 15);
+    std::ifstream is(f.c_str());
+    std::string all((std::istreambuf_iterator<char>(is)),
+        std::istreambuf_iterator<char>());
+    check("table file: comment lines",
+        all.compare(0, 27, "// a comment\n// second line") == 0, all);
+    check("table file: count and first point shifted by 1000 s",
+        all.find("\n4\n(\n    (1000 293.15)\n") != std::string::npos, all);
+    check("table file: last point", all.find("    (1200 0.1)\n)\n")
+        != std::string::npos, all);
+}
+
 } // End anonymous namespace
 
 
@@ -489,6 +549,7 @@ int main(int argc, char* argv[])
     testFormats();
     testErrors();
     testCollect();
+    testTemperatureHistory();
 
     Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
         << endl;
