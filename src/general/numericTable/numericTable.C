@@ -121,11 +121,17 @@ bool Foam::numericTable::split
             }
         }
     }
+    // (a line of blanks, tabs included, is empty; with tab separators a
+    // leading or trailing tab separates an empty field)
     text = trim(line.substr(0, end), '\0');
     usedSep = sep;
     if (text.empty())
     {
         return true;
+    }
+    if (sep == '\t')
+    {
+        text = trim(line.substr(0, end), '\t');
     }
 
     // The separator of this line

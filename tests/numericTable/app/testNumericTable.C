@@ -217,12 +217,20 @@ void testFormats()
     // Tab: empty fields are fields; a text column not numeric
     {
         const fileName f = write("tab.tsv",
-            "t\tnote\tT\n0\t\t20\n1\tfire lit\t300\n");
+            "t\tnote\tT\n0\t\t20\n1\tfire lit\t300\n\t\t\n"
+            "2\tx\t301\t\n");
         numericTable::settings s(csv());
         s.separator = '\t';
         s.numericColumns = {0, 2};
         numericTable t(f, s);
-        checkAbs("tab: rows", t.size(), 2, 0);
+        checkAbs("tab: rows (a line of tabs is blank)", t.size(), 3, 0);
+        checkAbs("tab: a trailing tab is an empty last field",
+            t.nColumns(2), 4, 0);
+        numericTable::settings s1(s);
+        s1.numericColumns = {1, 2};
+        numericTable t1(write("tab1.tsv", "a\tb\tc\n\t1\t2\n"), s1);
+        check("tab: a leading tab is an empty first field",
+            t1.size() == 1 && t1.field(0, 0).empty() && t1.value(0, 2) == 2);
         check("tab: empty text field kept", t.field(0, 1).empty());
         check("tab: text with a blank", t.field(1, 1) == "fire lit");
         checkAbs("tab: value", t.value(1, 2), 300, 0);
