@@ -251,7 +251,8 @@ void readHistoryFile
 (
     const dictionary& surfaceDict,
     const fileName& file,
-    List<Tuple2<scalar, scalar>>& rows
+    List<Tuple2<scalar, scalar>>& rows,
+    labelList& lines
 )
 {
     if (!isFile(file))
@@ -272,9 +273,11 @@ void readHistoryFile
     const numericTable table(file, s);
 
     rows.setSize(table.size());
+    lines.setSize(table.size());
     forAll(rows, i)
     {
         rows[i] = Tuple2<scalar, scalar>(table.value(i, 0), table.value(i, 1));
+        lines[i] = table.line(i);
     }
 }
 
@@ -509,6 +512,8 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
     std::string historySource;
+    fileName historyFile;           // (a file: its name and the lines)
+    labelList historyLines;
     if (hasTable)
     {
         rows = surfaceDict.get<List<Tuple2<scalar, scalar>>>("table");
@@ -529,7 +534,8 @@ int main(int argc, char *argv[])
             file = args.path()/file;
         }
         historySource = file;
-        readHistoryFile(surfaceDict, file, rows);
+        historyFile = file;
+        readHistoryFile(surfaceDict, file, rows, historyLines);
     }
 
     quadrupole::piecewiseLinearHistory history;
@@ -539,6 +545,19 @@ int main(int argc, char *argv[])
         const scalar v = rows[i].second();
         if (!std::isfinite(t) || !std::isfinite(v) || t < 0)
         {
+            if (historyFile.size())
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__, historyFile,
+                    historyLines[i]
+                )   << "Line " << historyLines[i] << " of the surface history"
+                    << " file: time " << rows[i].first() << " " << timeUnit
+                    << " (" << t << " s), value " << v << ": times must be"
+                    << " >= 0 and finite in s" << nl
+                    << "    in keyword 'file' of " << surfaceDict.name()
+                    << nl << exit(FatalIOError);
+            }
             FatalIOErrorInFunction(surfaceDict)
                 << "History (" << historySource.c_str() << ") row " << i + 1
                 << ": time " << rows[i].first() << " " << timeUnit
