@@ -24,7 +24,7 @@
   honest is tested over 10 seeds by tests/hearthFitCoverage;
 - failing runs: at least one forward run failed and the fit still
   recovers the truth within 0.5 %;
-- bad input: each of the 6 cases of run step 5 failed with its message and
+- bad input: each of the 12 cases of run step 5 failed with its message and
   made no scratch copy (badInput.txt);
 - zero residual (run step 6): exit status 0 (converged: zeroResidual), no
   crash signal or stack trace in the log, cost 0 and s^2 = 0 said in the
@@ -217,7 +217,7 @@ for k, v in truth.items():
 # 4. Bad input
 with open('badInput.txt') as f:
     bad = f.read().splitlines()
-c.true('bad input: 6 cases', len(bad) == 6)
+c.true('bad input: 12 cases', len(bad) == 12)
 for line in bad:
     c.true('bad input: ' + line, line.split(': ', 1)[1].startswith('ok'))
 

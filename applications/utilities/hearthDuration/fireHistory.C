@@ -167,8 +167,10 @@ Foam::fireHistory::fireHistory
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::List<Foam::Tuple2<Foam::scalar, Foam::scalar>>
-Foam::fireHistory::table(const scalar duration) const
+Foam::temperatureHistory Foam::fireHistory::table
+(
+    const scalar duration
+) const
 {
     if (duration < rampTime_)
     {
@@ -177,21 +179,31 @@ Foam::fireHistory::table(const scalar duration) const
             << rampTime_ << " s" << exit(FatalError);
     }
 
-    DynamicList<Tuple2<scalar, scalar>> points;
+    temperatureHistory history;
+    auto add = [&history](const scalar t, const scalar T)
+    {
+        if (history.append(t, T) != temperatureHistory::check::ok)
+        {
+            FatalErrorInFunction
+                << "Invalid point (" << t << " s, " << T << " K) of the"
+                << " fire history after " << history.size() << " point(s)"
+                << exit(FatalError);
+        }
+    };
 
     // Burning
     if (rampTime_ > 0)
     {
-        points.append(Tuple2<scalar, scalar>(0, rampStartTemperature_));
-        points.append(Tuple2<scalar, scalar>(rampTime_, fireTemperature_));
+        add(0, rampStartTemperature_);
+        add(rampTime_, fireTemperature_);
     }
     else
     {
-        points.append(Tuple2<scalar, scalar>(0, fireTemperature_));
+        add(0, fireTemperature_);
     }
-    if (duration > points.last().first())
+    if (duration > history.times().last())
     {
-        points.append(Tuple2<scalar, scalar>(duration, fireTemperature_));
+        add(duration, fireTemperature_);
     }
 
     // Cooling, from (duration, fireTemperature)
@@ -207,38 +219,26 @@ Foam::fireHistory::table(const scalar duration) const
         for (label i = 1; i <= n; ++i)
         {
             const scalar t = min(i*step, end);
-            points.append
+            add
             (
-                Tuple2<scalar, scalar>
-                (
-                    duration + t,
-                    Tair_ + (fireTemperature_ - Tair_)*Foam::exp(-t/tau_)
-                )
+                duration + t,
+                Tair_ + (fireTemperature_ - Tair_)*Foam::exp(-t/tau_)
             );
         }
         if (coolingTime_ > end)
         {
-            points.append
-            (
-                Tuple2<scalar, scalar>(duration + coolingTime_, Tair_)
-            );
+            add(duration + coolingTime_, Tair_);
         }
     }
     else
     {
         for (const Tuple2<scalar, scalar>& point : coolingTable_)
         {
-            points.append
-            (
-                Tuple2<scalar, scalar>
-                (
-                    duration + point.first(), point.second()
-                )
-            );
+            add(duration + point.first(), point.second());
         }
     }
 
-    return List<Tuple2<scalar, scalar>>(std::move(points));
+    return history;
 }
 
 
@@ -249,28 +249,19 @@ void Foam::fireHistory::write
     const scalar startTime
 ) const
 {
-    const List<Tuple2<scalar, scalar>> points(table(duration));
-
-    OFstream os(file);
-    os.precision(12);
-
-    os  << "// Fire history written by hearthDuration: duration "
-        << duration/hour << " h (" << duration << " s), " << description_.c_str()
-        << nl
-        << "// (time [s], fire temperature [K]), linear in between, the"
+    OStringStream header;
+    header.precision(12);
+    header
+        << "Fire history written by hearthDuration: duration "
+        << duration/hour << " h (" << duration << " s), "
+        << description_.c_str() << nl
+        << "(time [s], fire temperature [K]), linear in between, the"
         << " last value held. Read by the fire patch of 0/T:" << nl
-        << "//     type uniformFixedValue; uniformValue tableFile;" << nl
-        << "//     uniformValueCoeffs { file \"<this file>\";"
-        << " outOfBounds clamp; interpolationScheme linear; }" << nl
-        << points.size() << nl << '(' << nl;
+        << "    type uniformFixedValue; uniformValue tableFile;" << nl
+        << "    uniformValueCoeffs { file \"<this file>\";"
+        << " outOfBounds clamp; interpolationScheme linear; }";
 
-    for (const Tuple2<scalar, scalar>& point : points)
-    {
-        os  << "    (" << startTime + point.first() << ' '
-            << point.second() << ')' << nl;
-    }
-
-    os  << ')' << nl;
+    table(duration).writeTableFile(file, header.str(), startTime, 12);
 }
 
 

@@ -57,6 +57,7 @@ Usage
 
 #include "argList.H"
 #include "thermocouples.H"
+#include "numericTable.H"
 #include "Time.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
@@ -123,86 +124,73 @@ std::string quoted(const std::string& s)
 }
 
 
-std::vector<std::string> splitCsv(const std::string& line)
+//- Read a sensor-history CSV (a header: time, then one name per sensor;
+//  rows of numbers, as many as the names) with the common table reader
+//  (src/general/numericTable). Observations: any error (also duplicate
+//  names, times that do not increase strictly, nan, inf) is a
+//  FatalIOError naming the file and line. A run's CSV: false with the
+//  first error in err; the rows of a restarted run replace the later ones
+bool readCsv
+(
+    const std::string& path,
+    Histories& h,
+    std::string& err,
+    const bool observations = false
+)
 {
-    std::vector<std::string> out;
-    std::stringstream ss(line);
-    std::string item;
-    while (std::getline(ss, item, ','))
+    numericTable::settings s;
+    s.nColumns = -2;
+    s.uniqueNames = true;
+    s.roles = {"a time"};
+    s.collect = !observations;
+    if (observations)
     {
-        const auto b = item.find_first_not_of(" \t\r");
-        const auto e = item.find_last_not_of(" \t\r");
-        out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
+        s.orderedColumn = 0;
+        s.what = "the observations file";
+        s.context = "observations of system/hearthFitDict";
     }
-    return out;
-}
-
-
-//- Read a CSV: a header (first column time), rows of numbers.
-//  False (with a message) on a problem
-bool readCsv(const std::string& path, Histories& h, std::string& err)
-{
-    std::ifstream is(path);
-    if (!is.good())
+    else
     {
-        err = "cannot open " + path;
+        s.what = "the sensors CSV of the run";
+    }
+    const numericTable table(fileName(path), s);
+
+    if (table.errors().size())
+    {
+        const numericTable::error& e = table.errors()[0];
+        err = path + (e.line > 0 ? " line " + std::to_string(e.line) : "")
+            + ": " + e.message;
         return false;
     }
-    std::string line;
-    bool header = false;
-    long lineNo = 0;
-    while (std::getline(is, line))
+    if (table.names().size() < 2)
     {
-        ++lineNo;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (line[line.find_first_not_of(" \t")] == '#') continue;
-        const std::vector<std::string> cols(splitCsv(line));
-        if (!header)
+        err = path + ": the header needs a time and a sensor column";
+        if (observations)
         {
-            if (cols.size() < 2)
-            {
-                err = path + ": header needs a time and a sensor column";
-                return false;
-            }
-            h.names.assign(cols.begin() + 1, cols.end());
-            h.values.assign(h.names.size(), std::vector<double>());
-            header = true;
-            continue;
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path)
+                << "observations: " << err.c_str() << nl
+                << exit(FatalIOError);
         }
-        if (cols.size() != h.names.size() + 1)
-        {
-            err = path + " line " + std::to_string(lineNo)
-                + ": wrong number of columns";
-            return false;
-        }
-        std::vector<double> v(cols.size());
-        for (size_t i = 0; i < cols.size(); ++i)
-        {
-            char* end = nullptr;
-            v[i] = std::strtod(cols[i].c_str(), &end);
-            if (end == cols[i].c_str() || *end != '\0')
-            {
-                err = path + " line " + std::to_string(lineNo)
-                    + ": not a number '" + cols[i] + "'";
-                return false;
-            }
-        }
-        if (h.times.size() && v[0] <= h.times.back())
-        {
-            // Restarted run: later rows replace earlier ones
-            while (h.times.size() && h.times.back() >= v[0])
-            {
-                h.times.pop_back();
-                for (auto& s : h.values) s.pop_back();
-            }
-        }
-        h.times.push_back(v[0]);
-        for (size_t i = 1; i < v.size(); ++i) h.values[i - 1].push_back(v[i]);
-    }
-    if (!header || h.times.empty())
-    {
-        err = path + ": no data";
         return false;
+    }
+
+    h.names.assign(table.names().begin() + 1, table.names().end());
+    h.values.assign(h.names.size(), std::vector<double>());
+    h.times.clear();
+    forAll(table, rowi)
+    {
+        const double t = table.value(rowi, 0);
+        // Restarted run (not for observations: checked increasing)
+        while (h.times.size() && h.times.back() >= t)
+        {
+            h.times.pop_back();
+            for (auto& v : h.values) v.pop_back();
+        }
+        h.times.push_back(t);
+        for (size_t i = 0; i < h.names.size(); ++i)
+        {
+            h.values[i].push_back(table.value(rowi, i + 1));
+        }
     }
     return true;
 }
@@ -581,7 +569,7 @@ int main(int argc, char *argv[])
     Histories measured;
     {
         std::string err;
-        if (!readCsv(obsPath, measured, err))
+        if (!readCsv(obsPath, measured, err, true))
         {
             FatalIOErrorInFunction(obsDict)
                 << "observations: " << err.c_str() << exit(FatalIOError);

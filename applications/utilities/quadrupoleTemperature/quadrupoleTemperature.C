@@ -88,9 +88,10 @@ Description
             // history: (time value) rows, either inline or in a file
             table       ((0 20) (600 700) (21600 700) (30000 100));
             // file     "fire.csv";     // relative to the case directory;
-            //                          // 2 columns time,value (comma or
-            //                          // blanks), '#' comments, header
-            //                          // lines at the top skipped
+            //                          // columns time, value (others
+            //                          // ignored) in the common table
+            //                          // format (README "Numeric table
+            //                          // files"); times must not decrease
             // timeUnit s;              // s | min | h: unit of the history
             //                          // times (default s)
         }
@@ -162,6 +163,7 @@ Usage
 #include "OFstream.H"
 #include "Tuple2.H"
 #include "checkedRead.H"
+#include "numericTable.H"
 #include "historyResponse.H"
 #include <chrono>
 #include <iomanip>
@@ -243,98 +245,40 @@ bool readProperties
 }
 
 
-//- Parse a whole field as a finite number
-bool parseNumber(const std::string& field, scalar& x)
-{
-    const size_t first = field.find_first_not_of(" \t\r");
-    if (first == std::string::npos)
-    {
-        return false;
-    }
-    const size_t last = field.find_last_not_of(" \t\r");
-    const std::string s(field.substr(first, last - first + 1));
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
-    {
-        return false;
-    }
-    x = v;
-    return true;
-}
-
-
-//- Read a two-column history file (time, value)
+//- Read a two-column history file (time, value) with the common table
+//  reader (src/general/numericTable): errors name the file and line
 void readHistoryFile
 (
     const dictionary& surfaceDict,
     const fileName& file,
-    List<Tuple2<scalar, scalar>>& rows
+    List<Tuple2<scalar, scalar>>& rows,
+    labelList& lines
 )
 {
-    IFstream is(file);
-    if (!is.good() || isDir(file))
+    if (!isFile(file))
     {
         FatalIOErrorInFunction(surfaceDict)
             << "Keyword 'file': cannot read " << file << nl
             << exit(FatalIOError);
     }
-    std::ifstream in(file);
-    std::string line;
-    label lineNo = 0;
-    DynamicList<Tuple2<scalar, scalar>> data;
-    while (std::getline(in, line))
+
+    numericTable::settings s;
+    s.numericColumns = labelList({0, 1});
+    s.roles = {"a time", "a value"};
+    s.columnsDescription = "the time (column 0) and the value (column 1)";
+    s.orderedColumn = 0;
+    s.ordering = numericTable::order::nonDecreasing;
+    s.what = "the surface history file";
+    s.context = "keyword 'file' of " + surfaceDict.name();
+    const numericTable table(file, s);
+
+    rows.setSize(table.size());
+    lines.setSize(table.size());
+    forAll(rows, i)
     {
-        ++lineNo;
-        const size_t first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
-        {
-            continue;
-        }
-        std::vector<std::string> fields;
-        if (line.find(',') != std::string::npos)
-        {
-            std::istringstream ss(line);
-            std::string f;
-            while (std::getline(ss, f, ','))
-            {
-                fields.push_back(f);
-            }
-        }
-        else
-        {
-            std::istringstream ss(line);
-            std::string f;
-            while (ss >> f)
-            {
-                fields.push_back(f);
-            }
-        }
-        scalar t = 0, v = 0;
-        const bool ok =
-            fields.size() >= 2
-         && parseNumber(fields[0], t) && parseNumber(fields[1], v);
-        if (!ok)
-        {
-            if (data.empty())
-            {
-                continue;   // header line
-            }
-            FatalErrorInFunction
-                << "History file " << file << " line " << lineNo
-                << ": expected two numbers (time, value), read '"
-                << line.c_str() << "'" << nl << exit(FatalError);
-        }
-        data.append(Tuple2<scalar, scalar>(t, v));
+        rows[i] = Tuple2<scalar, scalar>(table.value(i, 0), table.value(i, 1));
+        lines[i] = table.line(i);
     }
-    if (data.empty())
-    {
-        FatalErrorInFunction
-            << "History file " << file << ": no data row" << nl
-            << exit(FatalError);
-    }
-    rows.transfer(data);
 }
 
 } // End namespace Foam
@@ -568,6 +512,8 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
     std::string historySource;
+    fileName historyFile;           // (a file: its name and the lines)
+    labelList historyLines;
     if (hasTable)
     {
         rows = surfaceDict.get<List<Tuple2<scalar, scalar>>>("table");
@@ -588,7 +534,8 @@ int main(int argc, char *argv[])
             file = args.path()/file;
         }
         historySource = file;
-        readHistoryFile(surfaceDict, file, rows);
+        historyFile = file;
+        readHistoryFile(surfaceDict, file, rows, historyLines);
     }
 
     quadrupole::piecewiseLinearHistory history;
@@ -598,6 +545,19 @@ int main(int argc, char *argv[])
         const scalar v = rows[i].second();
         if (!std::isfinite(t) || !std::isfinite(v) || t < 0)
         {
+            if (historyFile.size())
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__, historyFile,
+                    historyLines[i]
+                )   << "Line " << historyLines[i] << " of the surface history"
+                    << " file: time " << rows[i].first() << " " << timeUnit
+                    << " (" << t << " s), value " << v << ": times must be"
+                    << " >= 0 and finite in s" << nl
+                    << "    in keyword 'file' of " << surfaceDict.name()
+                    << nl << exit(FatalIOError);
+            }
             FatalIOErrorInFunction(surfaceDict)
                 << "History (" << historySource.c_str() << ") row " << i + 1
                 << ": time " << rows[i].first() << " " << timeUnit

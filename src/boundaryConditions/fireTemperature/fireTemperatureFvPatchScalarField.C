@@ -10,146 +10,18 @@
 #include "OSspecific.H"
 #include "OStringStream.H"
 #include "checkedRead.H"
+#include "numericTable.H"
 
 #include <algorithm>
-#include <cerrno>
-#include <cfenv>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <fstream>
 #include <string>
-#include <vector>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
-
-// Spaces, tabs and a Windows '\r' trimmed at both ends; surrounding double
-// quotes removed (spreadsheets quote fields)
-std::string trimField(const std::string& s)
-{
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string::npos)
-    {
-        return std::string();
-    }
-    const auto e = s.find_last_not_of(" \t\r");
-    std::string t(s.substr(b, e - b + 1));
-    if (t.size() >= 2 && t.front() == '"' && t.back() == '"')
-    {
-        t = t.substr(1, t.size() - 2);
-    }
-    return t;
-}
-
-
-// The fields of a line: at each separator, or at runs of spaces and tabs
-// for separator '\0'
-std::vector<std::string> splitLine(const std::string& line, const char sep)
-{
-    std::vector<std::string> fields;
-    std::size_t pos = 0;
-
-    if (sep == '\0')
-    {
-        while (true)
-        {
-            const auto b = line.find_first_not_of(" \t\r", pos);
-            if (b == std::string::npos)
-            {
-                break;
-            }
-            const auto e = line.find_first_of(" \t\r", b);
-            fields.push_back
-            (
-                trimField
-                (
-                    line.substr(b, e == std::string::npos ? e : e - b)
-                )
-            );
-            if (e == std::string::npos)
-            {
-                break;
-            }
-            pos = e;
-        }
-    }
-    else
-    {
-        while (true)
-        {
-            const auto e = line.find(sep, pos);
-            fields.push_back
-            (
-                trimField
-                (
-                    line.substr(pos, e == std::string::npos ? e : e - pos)
-                )
-            );
-            if (e == std::string::npos)
-            {
-                break;
-            }
-            pos = e + 1;
-        }
-    }
-
-    return fields;
-}
-
-
-// A whole field read as a number (strtod: also nan and inf, caught later).
-// A number beyond the range of double (1e400) gives +-inf, also caught
-// later: strtod raises FE_OVERFLOW for it, which OpenFOAM traps
-// (FOAM_SIGFPE) and would end in a crash with a stack trace instead of an
-// error naming the line, so the traps are held while it reads
-bool parseNumber(const std::string& s, Foam::scalar& x)
-{
-    if (s.empty())
-    {
-        return false;
-    }
-    const char* begin = s.c_str();
-    char* end = nullptr;
-    errno = 0;
-    std::fenv_t fenv;
-    std::feholdexcept(&fenv);
-    const double v = std::strtod(begin, &end);
-    std::fesetenv(&fenv);
-    if (end == begin || end != begin + s.size())
-    {
-        return false;
-    }
-    x = v;
-    return true;
-}
-
-
-// A line to skip anywhere: blank, or a '#' comment
-bool skipLine(const std::string& line)
-{
-    const auto b = line.find_first_not_of(" \t\r");
-    return b == std::string::npos || line[b] == '#';
-}
-
-
-// The line for messages (without a '\r', cut if long)
-std::string showLine(const std::string& line)
-{
-    std::string s(line);
-    if (!s.empty() && s.back() == '\r')
-    {
-        s.pop_back();
-    }
-    if (s.size() > 120)
-    {
-        s = s.substr(0, 117) + "...";
-    }
-    return s;
-}
-
 
 // Keywords of the patch entry
 const char* const knownKeywords[] =
@@ -208,9 +80,13 @@ Foam::string Foam::fireTemperatureFvPatchScalarField::describeSource() const
 
 std::string Foam::fireTemperatureFvPatchScalarField::separatorName() const
 {
-    if (separator_ == '\0')
+    if (separator_ == numericTable::whitespace)
     {
         return "whitespace";
+    }
+    else if (separator_ == numericTable::automatic)
+    {
+        return "auto";
     }
     else if (separator_ == '\t')
     {
@@ -226,10 +102,11 @@ Foam::string Foam::fireTemperatureFvPatchScalarField::describeTime
 ) const
 {
     OStringStream os;
-    os  << "t = " << times_[rowi] << " s";
+    const scalar t = history_.times()[rowi];
+    os  << "t = " << t << " s";
     if (timeUnit_ != "s" || timeOffset_ != 0)
     {
-        os  << " (" << (times_[rowi] + timeOffset_)/timeFactor() << ' '
+        os  << " (" << (t + timeOffset_)/timeFactor() << ' '
             << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
             << ")";
     }
@@ -313,7 +190,11 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
 
         if (s == "whitespace" || s == "space" || s == " ")
         {
-            separator_ = '\0';
+            separator_ = numericTable::whitespace;
+        }
+        else if (s == "auto" || s == "automatic")
+        {
+            separator_ = numericTable::automatic;
         }
         else if (s == "tab" || s == "\\t" || s == "\t")
         {
@@ -328,8 +209,9 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
             FatalIOErrorInFunction(dict)
                 << "Keyword 'separator' = " << tok << where().c_str()
                 << " is not valid: give one character in quotes"
-                << " (\",\" \";\"), tab, or whitespace (runs of spaces and"
-                << " tabs)" << nl
+                << " (\",\" \";\"), tab, whitespace (runs of spaces and"
+                << " tabs), or auto (per line: ',' if it has one, else ';',"
+                << " else whitespace)" << nl
                 << exit(FatalIOError);
         }
     }
@@ -450,37 +332,50 @@ void Foam::fireTemperatureFvPatchScalarField::addRow
     }
 
     const scalar t = timeFactor()*tau - timeOffset_;
-    const label n = times_.size();
+    const temperatureHistory::check result = history_.append(t, T, line);
 
-    if (n && !(t > times_[n - 1]))
+    if
+    (
+        result == temperatureHistory::check::sameTime
+     || result == temperatureHistory::check::timeBefore
+    )
     {
+        const label n = history_.size();
+        const scalar tPrev = history_.times()[n - 1];
         OStringStream prev;
         if (file_.size())
         {
-            prev << "line " << lines_[n - 1];
+            prev << "line " << history_.line(n - 1);
         }
         else
         {
-            prev << "row " << lines_[n - 1];
+            prev << "row " << history_.line(n - 1);
         }
-        const scalar prevTau = (times_[n - 1] + timeOffset_)/timeFactor();
+        const scalar prevTau = (tPrev + timeOffset_)/timeFactor();
 
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
             << "Times of the fire history do not increase: "
             << at.str().c_str() << " has time " << tau << ' ' << timeUnit_
             << " (t = " << t << " s), "
-            << (t == times_[n - 1] ? "the same as" : "before") << ' '
+            << (
+                   result == temperatureHistory::check::sameTime
+                 ? "the same as" : "before"
+               ) << ' '
             << prev.str().c_str() << " with time " << prevTau << ' '
-            << timeUnit_ << " (t = " << times_[n - 1] << " s)" << nl
+            << timeUnit_ << " (t = " << tPrev << " s)" << nl
             << "    The times must increase strictly (sort the rows,"
             << " remove duplicate times)" << nl
             << "    in " << describeSource().c_str() << nl
             << exit(FatalIOError);
     }
-
-    times_.append(t);
-    temperatures_.append(T);
-    lines_.append(line);
+    else if (result != temperatureHistory::check::ok)
+    {
+        // (finite values above absolute zero checked above)
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, sourceLine)
+            << at.str().c_str() << ": not a valid point of the history"
+            << nl << "    in " << describeSource().c_str() << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -543,100 +438,43 @@ void Foam::fireTemperatureFvPatchScalarField::readFile
             << patch().name() << "' of field " << internalField().name()
             << nl << exit(FatalIOError);
     }
+    is.close();
 
-    times_.clear();
-    temperatures_.clear();
-    lines_.clear();
+    history_.clear();
 
-    const label nNeeded = max(timeColumn_, temperatureColumn_) + 1;
+    // The common table reader (src/general/numericTable): malformed lines,
+    // non-finite numbers and a file without data end in a FatalIOError
+    // naming the file and line
+    numericTable::settings s;
+    s.separator = separator_;
+    s.headerLines = headerLines_;
+    s.numericColumns = labelList({timeColumn_, temperatureColumn_});
+    s.roles.resize(max(timeColumn_, temperatureColumn_) + 1);
+    s.roles[timeColumn_] = "a time";
+    s.roles[temperatureColumn_] = "a temperature";
+    s.columnsDescription =
+        "timeColumn " + std::to_string(timeColumn_)
+      + " and temperatureColumn " + std::to_string(temperatureColumn_);
+    s.what = "the fire history file";
+    s.context = describeSource();
 
-    std::string line;
-    label lineNo = 0;
-    label nHeader = 0;
-    bool inData = false;
+    const numericTable table(file_, s);
 
-    while (std::getline(is, line))
+    // Units, absolute zero, increasing times (in s: also for the table)
+    forAll(table, rowi)
     {
-        ++lineNo;
-
-        if (headerLines_ >= 0 && lineNo <= headerLines_)
-        {
-            ++nHeader;
-            continue;
-        }
-        if (skipLine(line))
-        {
-            continue;
-        }
-
-        const std::vector<std::string> fields(splitLine(line, separator_));
-
-        scalar tau = 0, theta = 0;
-        const bool enough = label(fields.size()) >= nNeeded;
-        const bool okTime = enough && parseNumber(fields[timeColumn_], tau);
-        const bool okTemp =
-            enough && parseNumber(fields[temperatureColumn_], theta);
-
-        if (okTime && okTemp)
-        {
-            inData = true;
-            addRow(tau, theta, lineNo, file_, lineNo);
-            continue;
-        }
-
-        if (headerLines_ < 0 && !inData)
-        {
-            // A header line at the top
-            ++nHeader;
-            continue;
-        }
-
-        // A malformed data line
-        OStringStream why;
-        if (!enough)
-        {
-            why << "has " << label(fields.size()) << " column(s), but"
-                << " timeColumn " << timeColumn_ << " and temperatureColumn "
-                << temperatureColumn_ << " need at least " << nNeeded;
-        }
-        else
-        {
-            const label bad = okTime ? temperatureColumn_ : timeColumn_;
-            why << "has " << (okTime ? "a temperature" : "a time")
-                << " (column " << bad << ") '" << fields[bad].c_str()
-                << "' that is " << (fields[bad].empty() ? "empty" : "not a number");
-        }
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
-            << "Line " << lineNo << " of the fire history file "
-            << why.str().c_str() << " (separator "
-            << separatorName().c_str()
-            << (headerLines_ < 0 ? ", header lines detected: " : ", headerLines ")
-            << nHeader << "):" << nl
-            << "    " << showLine(line).c_str() << nl
-            << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
+        const label line = table.line(rowi);
+        addRow
+        (
+            table.value(rowi, timeColumn_),
+            table.value(rowi, temperatureColumn_),
+            line,
+            file_,
+            line
+        );
     }
 
-    if (is.bad())
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_, lineNo)
-            << "Error reading the fire history file after line " << lineNo
-            << nl << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
-    }
-
-    if (times_.empty())
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
-            << "No data row in the fire history file: " << lineNo
-            << " line(s), " << nHeader << " header line(s) "
-            << (headerLines_ < 0 ? "(non-numeric at the top) " : "")
-            << "skipped; a row needs numbers in timeColumn " << timeColumn_
-            << " and temperatureColumn " << temperatureColumn_
-            << " (separator " << separatorName().c_str() << ")" << nl << "    in " << describeSource().c_str() << nl
-            << exit(FatalIOError);
-    }
-
+    const label nHeader = table.nHeader();
     printSummary(nHeader);
 }
 
@@ -662,9 +500,7 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
             << exit(FatalIOError);
     }
 
-    times_.clear();
-    temperatures_.clear();
-    lines_.clear();
+    history_.clear();
 
     forAll(tableEntry_, rowi)
     {
@@ -687,9 +523,10 @@ void Foam::fireTemperatureFvPatchScalarField::printSummary
     const label nHeader
 ) const
 {
-    const label n = times_.size();
-    const scalar Tmin = min(temperatures_);
-    const scalar Tmax = max(temperatures_);
+    const label n = history_.size();
+    const scalarList& times = history_.times();
+    const scalar Tmin = min(history_.temperatures());
+    const scalar Tmax = max(history_.temperatures());
     const scalar off = temperatureUnit_ == "C" ? 273.15 : 0;
 
     OStringStream os;
@@ -698,17 +535,18 @@ void Foam::fireTemperatureFvPatchScalarField::printSummary
         << internalField().name() << ": " << n << " row(s) from ";
     if (file_.size())
     {
-        os  << file_ << " (lines " << lines_.first() << " to "
-            << lines_.last() << ", " << nHeader << " header line(s) skipped)";
+        os  << file_ << " (lines " << history_.line(0) << " to "
+            << history_.line(n - 1) << ", " << nHeader
+            << " header line(s) skipped)";
     }
     else
     {
         os  << "the inline table";
     }
-    os  << nl << "    time " << (times_.first() + timeOffset_)/timeFactor()
-        << " to " << (times_.last() + timeOffset_)/timeFactor() << ' '
+    os  << nl << "    time " << (times.first() + timeOffset_)/timeFactor()
+        << " to " << (times.last() + timeOffset_)/timeFactor() << ' '
         << timeUnit_ << " in the " << (file_.size() ? "file" : "table")
-        << ", t = " << times_.first() << " to " << times_.last()
+        << ", t = " << times.first() << " to " << times.last()
         << " s (timeOffset " << timeOffset_ << " s); T = " << Tmin - off
         << " to " << Tmax - off << ' ' << temperatureUnit_ << " = " << Tmin
         << " to " << Tmax << " K; before the first time: " << beforeStart_
@@ -738,9 +576,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
-    times_(),
-    temperatures_(),
-    lines_(),
+    history_(),
     file_(),
     dictName_(iF.objectPath()),
     dictLine_(-1)
@@ -766,9 +602,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
-    times_(),
-    temperatures_(),
-    lines_(),
+    history_(),
     file_(),
     dictName_(dict.name()),
     dictLine_(dict.startLineNumber())
@@ -827,9 +661,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -855,9 +687,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -882,9 +712,7 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
-    times_(ptf.times_),
-    temperatures_(ptf.temperatures_),
-    lines_(ptf.lines_),
+    history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
     dictLine_(ptf.dictLine_)
@@ -899,7 +727,8 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
     const bool check
 ) const
 {
-    const label n = times_.size();
+    const label n = history_.size();
+    const scalarList& times = history_.times();
 
     if (!n)
     {
@@ -908,22 +737,22 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
             << exit(FatalError);
     }
 
-    const bool before = t < times_[0];
-    const bool after = t > times_[n - 1];
+    const bool before = t < times[0];
+    const bool after = t > times[n - 1];
 
     if (check && ((before && beforeStart_ == "error")
                   || (after && afterEnd_ == "error")))
     {
         const label rowi = before ? 0 : n - 1;
         const string source = file_.size() ? string(file_) : string(dictName_);
-        const label line = file_.size() ? lines_[rowi] : dictLine_;
+        const label line = file_.size() ? history_.line(rowi) : dictLine_;
 
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, source, line)
             << "Time t = " << t << " s is "
             << (before ? "before the start" : "after the end")
             << " of the fire history, whose " << (before ? "first" : "last")
             << ' ' << (file_.size() ? "line" : "row") << ' '
-            << lines_[rowi] << " is at " << describeTime(rowi).c_str()
+            << history_.line(rowi) << " is at " << describeTime(rowi).c_str()
             << ", and " << (before ? "beforeStart" : "afterEnd")
             << " is 'error'" << nl
             << "    (set it to 'hold' to keep the "
@@ -935,27 +764,8 @@ Foam::scalar Foam::fireTemperatureFvPatchScalarField::temperature
             << exit(FatalIOError);
     }
 
-    if (t <= times_[0])
-    {
-        return temperatures_[0];
-    }
-    if (t >= times_[n - 1])
-    {
-        return temperatures_[n - 1];
-    }
-
-    // times_[i] <= t < times_[i+1]
-    const label i =
-        label(std::upper_bound(times_.cbegin(), times_.cend(), t)
-      - times_.cbegin()) - 1;
-
-    if (t == times_[i])
-    {
-        return temperatures_[i];
-    }
-
-    const scalar s = (t - times_[i])/(times_[i + 1] - times_[i]);
-    return temperatures_[i] + s*(temperatures_[i + 1] - temperatures_[i]);
+    // Linear between the rows, exact at them, held outside
+    return history_.value(t);
 }
 
 
@@ -987,9 +797,13 @@ void Foam::fireTemperatureFvPatchScalarField::write(Ostream& os) const
         (
             "temperatureColumn", 1, temperatureColumn_
         );
-        if (separator_ == '\0')
+        if (separator_ == numericTable::whitespace)
         {
             os.writeEntry("separator", word("whitespace"));
+        }
+        else if (separator_ == numericTable::automatic)
+        {
+            os.writeEntry("separator", word("auto"));
         }
         else if (separator_ == '\t')
         {

@@ -11,6 +11,7 @@
 #include "ListOps.H"
 #include "Time.H"
 #include "addToRunTimeSelectionTable.H"
+#include "numericTable.H"
 
 #include <cmath>
 
@@ -42,47 +43,6 @@ constexpr Foam::scalar zeroCelsius = 273.15;
 
 // Most faulty lines listed in one error message
 constexpr Foam::label maxListed = 20;
-
-// The columns of a line: separated by runs of commas, semicolons and white
-// space, with surrounding double quotes removed
-Foam::DynamicList<std::string> splitColumns(const std::string& line)
-{
-    Foam::DynamicList<std::string> cols;
-    std::string::size_type pos = 0;
-    const char* seps = ",; \t\r\v\f";
-
-    while (true)
-    {
-        const auto beg = line.find_first_not_of(seps, pos);
-        if (beg == std::string::npos)
-        {
-            break;
-        }
-        auto end = line.find_first_of(seps, beg);
-        if (end == std::string::npos)
-        {
-            end = line.size();
-        }
-
-        std::string col(line, beg, end - beg);
-        if (col.size() >= 2 && col.front() == '"' && col.back() == '"')
-        {
-            col = col.substr(1, col.size() - 2);
-        }
-        cols.append(col);
-        pos = end;
-    }
-
-    return cols;
-}
-
-
-// A finite number (the whole string)
-bool readNumber(const std::string& s, Foam::scalar& value)
-{
-    return Foam::readScalar(s, value) && std::isfinite(value);
-}
-
 
 // Silences Info and Warning for its lifetime (probes' own messages)
 class silence
@@ -135,149 +95,139 @@ void Foam::functionObjects::thermocouples::readSensorFile
             errs.append(msg);
         };
 
-        IFstream is(file);
+        // The common table reader (src/general/numericTable), collecting
+        // every faulty line: name (text), x, y, z (numbers), exactly 4
+        // columns; header lines at the top (no number in x, y, z) skipped
+        numericTable::settings s;
+        s.numericColumns = labelList({1, 2, 3});
+        s.nColumns = 4;
+        s.collect = true;
+        s.what = "the sensor file";
+        const numericTable table(file, s);
 
-        if (!is.good())
+        const char* axis[3] = {"x", "y", "z"};
+
+        // "line N \"text\": "
+        auto whereLine = [](const label n, const std::string& text)
         {
-            addError(-1, "cannot open the sensor file (missing or unreadable)");
-        }
-        else
+            return
+                "line " + std::to_string(n) + " \"" + text + "\": ";
+        };
+
+        // The errors of the reader, and the sensors of its rows, in the
+        // order of the lines
+        const std::vector<numericTable::error>& tableErrors = table.errors();
+        std::size_t ei = 0;
+        label rowi = 0;
+
+        while (ei < tableErrors.size() || rowi < table.size())
         {
-            std::string line;
-            label lineNo = 0;
-            bool firstData = true;
-
-            while (is.good())
-            {
-                is.getLine(line);
-                if (line.empty() && is.eof())
-                {
-                    break;
-                }
-                ++lineNo;
-
-                if (lineNo == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
-                {
-                    line.erase(0, 3);     // UTF-8 byte order mark
-                }
-                const auto hash = line.find('#');
-                if (hash != std::string::npos)
-                {
-                    line.erase(hash);
-                }
-
-                const DynamicList<std::string> cols(splitColumns(line));
-                if (cols.empty())
-                {
-                    continue;
-                }
-
-                // The line as read (trimmed), for the messages
-                std::string text(line);
-                text.erase(0, text.find_first_not_of(" \t"));
-                text.erase(text.find_last_not_of(" \t\r\n") + 1);
-                const std::string where
-                (
-                    "line " + std::to_string(lineNo) + " \"" + text + "\": "
+            const bool takeError =
+                ei < tableErrors.size()
+             && (
+                    rowi >= table.size()
+                 || tableErrors[ei].line < table.line(rowi)
                 );
 
-                scalar xyz[3] = {0, 0, 0};
-                bool numeric[3] = {false, false, false};
-                if (cols.size() == 4)
-                {
-                    for (label i = 0; i < 3; ++i)
-                    {
-                        numeric[i] = readNumber(cols[i + 1], xyz[i]);
-                    }
-                }
-
-                // Optional header line: the first one, with no number in
-                // its last three columns
-                if
+            if (takeError)
+            {
+                const numericTable::error& e = tableErrors[ei++];
+                const std::string first
                 (
-                    firstData && cols.size() == 4
-                 && !numeric[0] && !numeric[1] && !numeric[2]
-                )
+                    e.fields.size() ? e.fields[0] : std::string()
+                );
+                switch (e.kind)
                 {
-                    firstData = false;
-                    continue;
-                }
-                firstData = false;
-
-                if (cols.size() != 4)
-                {
-                    addError
-                    (
-                        lineNo,
-                        where + "sensor '" + cols[0] + "': expected 4"
-                        " columns (name, x, y, z), found "
-                      + std::to_string(cols.size())
-                    );
-                    continue;
-                }
-
-                const std::string& name = cols[0];
-                bool ok = true;
-
-                bool validName = !name.empty();
-                for (const char c : name)
-                {
-                    validName = validName && word::valid(c);
-                }
-                if (!validName)
-                {
-                    addError
-                    (
-                        lineNo,
-                        where + "sensor name '" + name + "' contains white"
-                        " space, a quote or one of / ; { }"
-                    );
-                    ok = false;
-                }
-
-                const char* axis[3] = {"x", "y", "z"};
-                for (label i = 0; i < 3; ++i)
-                {
-                    if (!numeric[i])
-                    {
+                    case numericTable::errorKind::open:
                         addError
                         (
-                            lineNo,
-                            where + "sensor '" + name + "': " + axis[i]
-                          + " = '" + cols[i + 1] + "' is not a number"
+                            -1,
+                            "cannot open the sensor file (missing or"
+                            " unreadable)"
                         );
-                        ok = false;
-                    }
+                        break;
+                    case numericTable::errorKind::noData:
+                        addError(-1, "no sensors in the file");
+                        break;
+                    case numericTable::errorKind::tooFewColumns:
+                    case numericTable::errorKind::wrongColumns:
+                        addError
+                        (
+                            e.line,
+                            whereLine(e.line, e.text) + "sensor '" + first
+                          + "': expected 4 columns (name, x, y, z), found "
+                          + std::to_string(e.fields.size())
+                        );
+                        break;
+                    case numericTable::errorKind::empty:
+                    case numericTable::errorKind::notNumber:
+                    case numericTable::errorKind::notFinite:
+                    case numericTable::errorKind::overflow:
+                        addError
+                        (
+                            e.line,
+                            whereLine(e.line, e.text) + "sensor '" + first
+                          + "': " + axis[e.column - 1] + " = '" + e.field
+                          + "' is " + numericTable::describe(e.kind)
+                        );
+                        break;
+                    default:
+                        addError
+                        (
+                            e.line,
+                            e.line > 0
+                          ? whereLine(e.line, e.text) + e.message
+                          : e.message
+                        );
                 }
-
-                if (!ok)
-                {
-                    continue;
-                }
-
-                const word sensor(name, false);
-                const auto iter = firstLine.cfind(sensor);
-                if (iter.found())
-                {
-                    addError
-                    (
-                        lineNo,
-                        where + "duplicate sensor name '" + name
-                      + "' (first at line " + std::to_string(*iter) + ")"
-                    );
-                    continue;
-                }
-
-                firstLine.insert(sensor, lineNo);
-                nms.append(sensor);
-                pts.append(point(xyz[0], xyz[1], xyz[2]));
-                lns.append(lineNo);
+                continue;
             }
 
-            if (errs.empty() && nms.empty())
+            const label lineNo = table.line(rowi);
+            const std::string& name = table.field(rowi, 0);
+            const std::string& text = table.text(rowi);
+            const scalar xyz[3] =
             {
-                addError(-1, "no sensors in the file");
+                table.value(rowi, 1),
+                table.value(rowi, 2),
+                table.value(rowi, 3)
+            };
+            ++rowi;
+
+            bool validName = !name.empty();
+            for (const char c : name)
+            {
+                validName = validName && word::valid(c);
             }
+            if (!validName)
+            {
+                addError
+                (
+                    lineNo,
+                    whereLine(lineNo, text) + "sensor name '" + name
+                  + "' contains white space, a quote or one of / ; { }"
+                );
+                continue;
+            }
+
+            const word sensor(name, false);
+            const auto iter = firstLine.cfind(sensor);
+            if (iter.found())
+            {
+                addError
+                (
+                    lineNo,
+                    whereLine(lineNo, text) + "duplicate sensor name '"
+                  + name + "' (first at line " + std::to_string(*iter)
+                  + ")"
+                );
+                continue;
+            }
+
+            firstLine.insert(sensor, lineNo);
+            nms.append(sensor);
+            pts.append(point(xyz[0], xyz[1], xyz[2]));
+            lns.append(lineNo);
         }
 
         positions.transfer(pts);
