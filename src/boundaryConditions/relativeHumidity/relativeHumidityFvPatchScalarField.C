@@ -206,7 +206,8 @@ void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
     {
         const scalar Tair =
             airTemperature_.valid() ? TairUniform : Tp[facei];
-        pw[facei] = RH*medium.kelvin().saturationPressure().pSat(Tair);
+        // p_wsat held at its critical value above the critical point
+        pw[facei] = RH*medium.saturationPressure(Tair);
     }
     operator==(pw);
 

@@ -13,6 +13,10 @@ namespace Foam
     defineTypeNameAndDebug(pendularMedium, 0);
 }
 
+const Foam::scalar Foam::pendularMedium::alphaLDry = 1e-100;
+const Foam::scalar Foam::pendularMedium::criticalMargin = 10;
+const Foam::scalar Foam::pendularMedium::alphaLCritical = 1e-9;
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
@@ -43,7 +47,24 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     ),
     kelvin_(*this),
     permeability_(gasPermeabilityModel::New(*this)),
-    conductivity_(effectiveConductivityModel::New(*this))
+    conductivity_(effectiveConductivityModel::New(*this)),
+    minimumTemperature_
+    (
+        max
+        (
+            kelvin_.saturationPressure().Tmin(),
+            kelvin_.surfaceTension().Tmin()
+        )
+    ),
+    dryOutTemperature_
+    (
+        min
+        (
+            kelvin_.saturationPressure().Tmax(),
+            kelvin_.surfaceTension().Tmax()
+        )
+    ),
+    pSatDryOut_(kelvin_.saturationPressure().pSat(dryOutTemperature_))
 {
     // Unknown keywords: a misspelt one would silently take its default
     {
@@ -156,14 +177,17 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         << ", (rho C)_s " << rhoSolid_*CpSolid_ << " J/(m3 K)"
         << ", L " << latentHeat_ << " J/kg at " << latentHeatTemperature_
         << " K, tau_s D_wa " << vapourDiffusivity() << " m2/s"
-        << ", pendular range alpha_l < " << pendularLimit() << endl;
+        << ", pendular range alpha_l < " << pendularLimit() << nl
+        << "    saturation laws from " << minimumTemperature_ << " K;"
+        << " liquid-free (all water vapour) at and above "
+        << dryOutTemperature_ << " K (critical point of the laws)" << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::pendularMedium::saturationState
-Foam::pendularMedium::saturation(const scalar T) const
+Foam::pendularMedium::lawState(const scalar T) const
 {
     const saturationPressureLaw& pSatLaw = kelvin_.saturationPressure();
     const surfaceTensionLaw& sigmaLaw = kelvin_.surfaceTension();
@@ -177,8 +201,183 @@ Foam::pendularMedium::saturation(const scalar T) const
         VmByR*sigma/T,
         pSatLaw.dpSatdT(T)/pSat,
         // d/dT [Vm sigma/(R T)] = Vm (sigma' T - sigma)/(R T^2)
-        VmByR*(sigmaLaw.dSigmadT(T)*T - sigma)/sqr(T)
+        VmByR*(sigmaLaw.dSigmadT(T)*T - sigma)/sqr(T),
+        false
     };
+}
+
+
+Foam::pendularMedium::saturationState
+Foam::pendularMedium::saturation(const scalar T) const
+{
+    if (std::isnan(T) || T < minimumTemperature_)
+    {
+        // Out of the laws' range (an iterate the solver rejects; NaN
+        // included): the laws at their lowest temperature, without slopes
+        saturationState sat = lawState(minimumTemperature_);
+        sat.T = T;
+        sat.dLnPSatdT = 0;
+        sat.dKelvinLengthdT = 0;
+        return sat;
+    }
+    if (T >= dryOutTemperature_)
+    {
+        // No liquid at or above the critical point: superheated vapour and
+        // air; p_wsat held at its value at T_d for relative humidities
+        return {T, pSatDryOut_, 0, 0, 0, true};
+    }
+    return lawState(T);
+}
+
+
+Foam::scalar Foam::pendularMedium::saturationPressure(const scalar T) const
+{
+    if (std::isnan(T) || T < minimumTemperature_)
+    {
+        return kelvin_.saturationPressure().pSat(minimumTemperature_);
+    }
+    if (T >= dryOutTemperature_)
+    {
+        return pSatDryOut_;
+    }
+    return kelvin_.saturationPressure().pSat(T);
+}
+
+
+Foam::scalar Foam::pendularMedium::vapourDensity
+(
+    const scalar W,
+    const scalar alphaL,
+    const saturationState& sat,
+    const scalar porosity
+) const
+{
+    if (alphaL > 0)
+    {
+        return vapourDensity(alphaL, sat);
+    }
+    return max(W, scalar(0))/porosity;
+}
+
+
+bool Foam::pendularMedium::liquidNearCritical
+(
+    const scalar W,
+    const scalar alphaL,
+    const saturationState& sat,
+    const scalar porosity
+) const
+{
+    if (sat.liquidFree)
+    {
+        // More water than the saturated vapour at T_d holds: liquid just
+        // below T_d
+        return
+            W/porosity
+          > Mw()*pSatDryOut_/(R()*dryOutTemperature_);
+    }
+    return
+        sat.T > dryOutTemperature_ - criticalMargin
+     && alphaL > alphaLCritical;
+}
+
+
+void Foam::pendularMedium::checkInitialState
+(
+    const volScalarField& T,
+    const volScalarField& p,
+    const volScalarField& alphaL
+) const
+{
+    // Gas pressure p_g > 0: in the cells and where a patch fixes it
+    checkedRead::check
+    (
+        p.objectPath(), p.name(), p.primitiveField(), checkedRead::positive()
+    );
+    forAll(p.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        if (!pp.fixesValue())
+        {
+            continue;
+        }
+        forAll(pp, facei)
+        {
+            if (!(pp[facei] > 0))
+            {
+                dictionary fieldDict;
+                fieldDict.name() = p.objectPath();
+                FatalIOErrorInFunction(fieldDict)
+                    << "Field '" << p.name() << "', patch "
+                    << pp.patch().name() << " (keyword 'value') = "
+                    << pp[facei] << " Pa on face " << facei
+                    << " is outside its valid range (0, inf): the gas"
+                    << " pressure p_g must be positive, in file "
+                    << p.objectPath() << nl << exit(FatalIOError);
+            }
+        }
+    }
+
+    // The laws' range from below (T <= 0 is checked by the solver)
+    forAll(T, celli)
+    {
+        if (T[celli] > 0 && T[celli] < minimumTemperature_)
+        {
+            dictionary fieldDict;
+            fieldDict.name() = T.objectPath();
+            FatalIOErrorInFunction(fieldDict)
+                << "Field '" << T.name() << "' (keyword 'internalField') = "
+                << T[celli] << " K in cell " << celli << " is outside the"
+                << " valid range [" << minimumTemperature_ << ", inf) of"
+                << " the saturation laws (supercooled water to -25 C; ice"
+                << " is not modelled), in file " << T.objectPath() << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    // The liquid: none near (or above) the critical point, and a vapour
+    // pressure of the menisci that leaves air (p_w <= p_g)
+    forAll(alphaL, celli)
+    {
+        const scalar a = alphaL[celli];
+        if (a <= 0 || !(T[celli] > 0))
+        {
+            continue;
+        }
+        dictionary fieldDict;
+        fieldDict.name() = alphaL.objectPath();
+        if (T[celli] > dryOutTemperature_ - criticalMargin)
+        {
+            FatalIOErrorInFunction(fieldDict)
+                << "Field '" << alphaL.name() << "' (keyword"
+                << " 'internalField') = " << a << " in cell " << celli
+                << " at T = " << T[celli] << " K: liquid water within "
+                << criticalMargin << " K of the critical point ("
+                << dryOutTemperature_ << " K), in file "
+                << alphaL.objectPath() << nl
+                << "    Valid: alphaL = 0 above "
+                << dryOutTemperature_ - criticalMargin
+                << " K (the liquid vanishes at the critical point)"
+                << exit(FatalIOError);
+        }
+        const saturationState sat = saturation(T[celli]);
+        const scalar pw = vapourDensity(a, sat)*R()*T[celli]/Mw();
+        if (pw > p[celli])
+        {
+            FatalIOErrorInFunction(fieldDict)
+                << "Field '" << alphaL.name() << "' (keyword"
+                << " 'internalField') = " << a << " in cell " << celli
+                << " at T = " << T[celli] << " K: the vapour pressure of the"
+                << " menisci p_w = " << pw << " Pa exceeds the gas pressure"
+                << " p = " << p[celli] << " Pa of " << p.objectPath()
+                << " (negative air pressure), in file "
+                << alphaL.objectPath() << nl
+                << "    Valid: p_w(alphaL, T) <= p (wetter soil holds its"
+                << " water at p_w close to p_wsat(T) = " << sat.pSat
+                << " Pa: raise p, or start cooler)"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -351,14 +550,18 @@ Foam::scalar Foam::pendularMedium::alphaL
     const scalar alphaGuess
 ) const
 {
-    if (W <= 0)
+    if (W <= 0 || sat.liquidFree)
     {
         return 0;
     }
 
     // Bracket [lo, hi] in s = ln(alpha): W(alpha) increases with alpha
-    // from 0 (dry: the vapour vanishes with the menisci) to phi rho_l
-    scalar lo = -700;
+    // from 0 (dry: the vapour vanishes with the menisci) to phi rho_l.
+    // Below alphaLDry the cell is dry (all its water vapour): near a zero
+    // of the surface tension alpha would underflow, dK/d alpha overflow
+    const scalar lnAlphaDry = std::log(alphaLDry);
+    bool dryTested = false;
+    scalar lo = lnAlphaDry;
     scalar hi = 0;
     scalar s =
         alphaGuess > 0
@@ -373,6 +576,15 @@ Foam::scalar Foam::pendularMedium::alphaL
         const scalar rhoW = vapourDensity(alpha, sat);
         const scalar g = porosity*(alpha*rhoL() + (1 - alpha)*rhoW) - W;
 
+        if (s <= lnAlphaDry)
+        {
+            // At the dry limit: still too much water there, the cell is dry
+            if (g >= 0)
+            {
+                return 0;
+            }
+            dryTested = true;
+        }
         if (mag(g) <= 1e-14*W)
         {
             return alpha;
@@ -386,8 +598,11 @@ Foam::scalar Foam::pendularMedium::alphaL
             lo = s;
         }
 
-        // Newton in s, dg/ds = alpha dW/d alpha; bisection when it leaves
-        // the bracket
+        // Newton in s on ln(W(alpha)/W) (the same step as on g near the
+        // root; far from it, exact where the water is all liquid, so that
+        // a guess orders of magnitude off costs one step, not one per unit
+        // of s), dg/ds = alpha dW/d alpha; bisection when it leaves the
+        // bracket
         const scalar dgds =
             alpha*porosity
            *(
@@ -395,8 +610,18 @@ Foam::scalar Foam::pendularMedium::alphaL
               + (1 - alpha)*rhoW*sat.kelvinLength
                *kelvin_.meniscus().dKdAlphaL(alpha)
             );
-        scalar sNew = dgds > 0 ? s - g/dgds : 0.5*(lo + hi);
-        if (!(sNew > lo && sNew < hi))
+        const scalar Walpha = g + W;
+        scalar sNew =
+            dgds > 0 && Walpha > 0
+          ? s - std::log(Walpha/W)*Walpha/dgds
+          : 0.5*(lo + hi);
+        if (!(sNew > lo) && !dryTested && lo == lnAlphaDry)
+        {
+            // Below the bracket, whose lower end is still the untried dry
+            // limit: try it
+            sNew = lnAlphaDry;
+        }
+        else if (!(sNew > lo && sNew < hi))
         {
             sNew = 0.5*(lo + hi);
         }
@@ -433,7 +658,7 @@ Foam::scalar Foam::pendularMedium::relaxedAlphaL
     const scalar dt
 ) const
 {
-    if (alphaOld <= 0 || W <= 0)
+    if (alphaOld <= 0 || W <= 0 || sat.liquidFree)
     {
         return 0;
     }
@@ -520,7 +745,12 @@ Foam::scalar Foam::pendularMedium::energy
     const scalar porosity
 ) const
 {
-    return energy(T, W, alphaL, vapourDensity(alphaL, T), pa, porosity);
+    return
+        energy
+        (
+            T, W, alphaL,
+            vapourDensity(W, alphaL, saturation(T), porosity), pa, porosity
+        );
 }
 
 
@@ -558,7 +788,7 @@ Foam::scalar Foam::pendularMedium::energyCapacity
     const scalar th = T - latentHeatTemperature_;
     const scalar gas = porosity*(1 - alphaL);
     const scalar rhoA = airDensity(pa, T);
-    const scalar rhoW = vapourDensity(alphaL, sat);
+    const scalar rhoW = vapourDensity(W, alphaL, sat, porosity);
     return
         (1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W
       + gas

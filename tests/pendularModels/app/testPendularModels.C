@@ -61,6 +61,9 @@ Usage
 #include "kelvinLaplace.H"
 #include "gasPermeabilityModel.H"
 #include "effectiveConductivityModel.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "pendularMedium.H"
 
 #include <cfenv>
 #include <cstdarg>
@@ -92,6 +95,55 @@ scalar centralDiff(const Function& f, const scalar x, const scalar h)
 }
 
 const scalar eps = std::numeric_limits<scalar>::epsilon();
+
+
+//- Run f with FatalError throwing, expecting a FatalError (not IO) whose
+//  message contains every word of 'needles' (a law refusing a temperature
+//  outside its range: an error, never a NaN)
+template<class Function>
+void expectError
+(
+    const std::string& name,
+    const Function& f,
+    std::initializer_list<const char*> needles
+)
+{
+    FatalError.throwExceptions();
+    std::string message;
+    bool thrown = false;
+    scalar value = 0;
+    try
+    {
+        value = f();
+    }
+    catch (const Foam::error& err)
+    {
+        thrown = true;
+        message = err.message();
+    }
+    FatalError.dontThrowExceptions();
+
+    bool found = thrown;
+    std::string missing;
+    for (const char* needle : needles)
+    {
+        if (message.find(needle) == std::string::npos)
+        {
+            found = false;
+            missing += std::string(" '") + needle + "'";
+        }
+    }
+    std::string firstLine = message.substr(0, message.find('\n'));
+    if (firstLine.size() > 90) firstLine = firstLine.substr(0, 90) + "...";
+
+    ++nChecks;
+    if (!found) ++nFailed;
+    Info<< (found ? "ok   " : "FAIL ") << name.c_str() << ": "
+        << (thrown ? "FatalError" : "no error, value ") ;
+    if (!thrown) Info<< value;
+    Info<< (missing.size() ? " missing" + missing : std::string()).c_str()
+        << " | " << firstLine.c_str() << endl;
+}
 
 
 // * * * * * * * * * * * * * * Surface tension * * * * * * * * * * * * * * //
@@ -140,7 +192,28 @@ void testSurfaceTension()
     (
         "vargaftik sigma = 0 at Tc = 647.15 K", varg->sigma(647.15), 0, 0
     );
-    checkAbs("vargaftik sigma = 0 above Tc (1000 K)", varg->sigma(1000), 0, 0);
+    expectError
+    (
+        "vargaftik refuses T above its Tc (1000 K)",
+        [&](){ return varg->sigma(1000); },
+        {"vargaftik", "1000", "647.15", "valid range"}
+    );
+    expectError
+    (
+        "vargaftik dsigma/dT refuses T above Tc (647.16 K)",
+        [&](){ return varg->dSigmadT(647.16); }, {"vargaftik", "647.16"}
+    );
+    expectError
+    (
+        "vargaftik refuses T below -25 C (240 K)",
+        [&](){ return varg->sigma(240); }, {"vargaftik", "240", "248.15"}
+    );
+    expectError
+    (
+        "vargaftik refuses T = NaN",
+        [&](){ return varg->sigma(std::nan("")); }, {"vargaftik", "nan"}
+    );
+    checkAbs("vargaftik Tmax = Tc = 647.15 K", varg->Tmax(), 647.15, 0);
 
     // Linear (eq. 13): the report's formula values, and within 1 % of the
     // table on its stated range [0, 100] C (found: 0.66 % at 50 C)
@@ -155,7 +228,16 @@ void testSurfaceTension()
             lin->sigma(T), 1e-3*sigmaTable[i][1], 1e-2
         );
     }
-    checkAbs("linear cut at 0 (t = 500 C)", lin->sigma(773.15), 0, 0);
+    checkAbs
+    (
+        "linear sigma = 0 at its zero, Tmax = 273.15 + a/b",
+        lin->sigma(lin->Tmax()), 0, 1e-17
+    );
+    expectError
+    (
+        "linear refuses T above its zero (t = 500 C)",
+        [&](){ return lin->sigma(773.15); }, {"linear", "773.15"}
+    );
 
     // Hsieh/Kaviany (eq. 14): sigma0 at 273.16 K, zero at Tc - dTm, and
     // the report's remark: the largest departure near 150 C
@@ -169,11 +251,17 @@ void testSurfaceTension()
         "hsiehKaviany sigma(Tc - dTm = 641.16 K) = 0",
         hk->sigma(647.3 - 6.14), 0, 1e-15
     );
+    expectError
+    (
+        "hsiehKaviany refuses T above Tc - dTm (645 K)",
+        [&](){ return hk->sigma(645); }, {"hsiehKaviany", "645", "641.16"}
+    );
     {
         scalar worst = 0, tWorst = -1;
         for (label i = 0; i < nSigmaTable; ++i)
         {
             const scalar T = sigmaTable[i][0] + 273.15;
+            if (T > hk->Tmax()) break;
             const scalar d = std::fabs(hk->sigma(T) - 1e-3*sigmaTable[i][1]);
             if (d > worst)
             {
@@ -195,6 +283,7 @@ void testSurfaceTension()
         for (label i = 0; i <= 3700; ++i)
         {
             const scalar t = 0.1*i;
+            if (t + 273.15 > hk->Tmax()) break;
             const scalar d =
                 std::fabs(hk->sigma(t + 273.15) - varg->sigma(t + 273.15));
             if (d > worstV)
@@ -240,7 +329,7 @@ void testSurfaceTension()
     // Field version
     {
         scalarField T(3);
-        T[0] = 300; T[1] = 400; T[2] = 700;
+        T[0] = 300; T[1] = 400; T[2] = 647.15;
         tmp<scalarField> s = varg->sigma(T);
         checkAbs
         (
@@ -363,7 +452,7 @@ void testSaturationPressure()
     // Derivatives
     const autoPtr<saturationPressureLaw>* laws[] = {&wp, &rk};
     const char* names[] = {"wagnerPruss", "rankine"};
-    const scalar Ts[] = {275, 300, 373.15, 450, 550, 640, 647, 700, 1200};
+    const scalar Ts[] = {275, 300, 373.15, 450, 550, 640, 647};
     for (label l = 0; l < 2; ++l)
     {
         const saturationPressureLaw& law = **laws[l];
@@ -381,42 +470,81 @@ void testSaturationPressure()
         );
     }
 
-    // Above the critical point: continuous value and slope, increasing,
-    // bounded by p_c exp(-a1)
+    // The critical point ends the saturation line: the value and slope
+    // there, increasing up to it, refused above (and below -25 C)
     const scalar Tc = saturationPressureLaws::wagnerPruss::Tc;
     const scalar pc = saturationPressureLaws::wagnerPruss::pc;
     checkRel("wagnerPruss p(Tc) = p_c", wp->pSat(Tc), pc, 1e-15);
     checkRel
     (
-        "wagnerPruss p continuous at Tc (Tc + 1e-9 K)",
-        wp->pSat(Tc + 1e-9), wp->pSat(Tc - 1e-9), 1e-10
-    );
-    checkRel
-    (
-        "wagnerPruss dp/dT continuous at Tc",
-        wp->dpSatdT(Tc + 1e-9), wp->dpSatdT(Tc - 1e-9), 1e-6
-    );
-    checkRel
-    (
         "wagnerPruss dp/dT(Tc) = -a1 p_c/T_c",
         wp->dpSatdT(Tc), 7.85951783*pc/Tc, 1e-14
+    );
+    checkRel
+    (
+        "wagnerPruss dp/dT continuous up to Tc (Tc - 1e-9 K)",
+        wp->dpSatdT(Tc - 1e-9), wp->dpSatdT(Tc), 1e-6
     );
     {
         bool increasing = true;
         scalar pPrev = 0;
-        for (label i = 0; i <= 2000; ++i)
+        for (label i = 0; i <= 398; ++i)
         {
-            const scalar T = 250 + i;
+            const scalar T = 248.15 + i;
             const scalar p = wp->pSat(T);
             if (!(p > pPrev && std::isfinite(p))) increasing = false;
             pPrev = p;
         }
         checkTrue
         (
-            "wagnerPruss finite and increasing 250-2250 K (p at 2250 K)",
-            increasing, pPrev, pc*std::exp(7.85951783), "<"
+            "wagnerPruss finite and increasing 248.15-646.15 K and to Tc",
+            increasing && wp->pSat(Tc) > pPrev, pPrev, pc, "<"
         );
     }
+    checkAbs("wagnerPruss range [248.15, 647.096] K (Tmax)", wp->Tmax(), Tc, 0);
+    checkAbs("wagnerPruss range (Tmin)", wp->Tmin(), 248.15, 0);
+    checkAbs("rankine range ends at the critical point", rk->Tmax(), Tc, 0);
+    expectError
+    (
+        "wagnerPruss refuses T above Tc (700 K)",
+        [&](){ return wp->pSat(700); },
+        {"wagnerPruss", "700", "647.096", "valid range"}
+    );
+    expectError
+    (
+        "wagnerPruss dp/dT refuses T above Tc (Tc + 1e-9 K)",
+        [&](){ return wp->dpSatdT(Tc + 1e-9); }, {"wagnerPruss"}
+    );
+    expectError
+    (
+        "wagnerPruss refuses T = 1500 K", [&](){ return wp->pSat(1500); },
+        {"wagnerPruss", "1500"}
+    );
+    expectError
+    (
+        "wagnerPruss refuses T below -25 C (200 K)",
+        [&](){ return wp->pSat(200); }, {"wagnerPruss", "200", "248.15"}
+    );
+    expectError
+    (
+        "wagnerPruss refuses T = NaN",
+        [&](){ return wp->pSat(std::nan("")); }, {"wagnerPruss", "nan"}
+    );
+    expectError
+    (
+        "wagnerPruss refuses T = -10 K",
+        [&](){ return wp->pSat(-10); }, {"wagnerPruss", "-10"}
+    );
+    expectError
+    (
+        "rankine refuses T above Tc (1200 K)",
+        [&](){ return rk->pSat(1200); }, {"rankine", "1200", "647.096"}
+    );
+    expectError
+    (
+        "rankine dp/dT refuses T above Tc (700 K)",
+        [&](){ return rk->dpSatdT(700); }, {"rankine", "700"}
+    );
 }
 
 
@@ -592,7 +720,11 @@ void testKelvinLaplace()
         1 - kl.relativeHumidity(1e-3, 293.15), 1e-3, "<"
     );
     checkAbs("p_w = 0 at alpha_l = 0 (dry)", kl.pw(0, 300), 0, 0);
-    checkAbs("p_w = 0 at alpha_l = 0 above Tc (1000 K)", kl.pw(0, 1000), 0, 0);
+    expectError
+    (
+        "p_w above Tc (1000 K): the law refuses it",
+        [&](){ return kl.pw(0.01, 1000); }, {"1000", "valid range"}
+    );
     checkTrue
     (
         "p_w -> 0 as alpha_l -> 0 (alpha_l = 1e-12, 300 K) [Pa]",
@@ -758,8 +890,13 @@ void testKelvinLaplace()
         kl.alphaL(1, 300), 1, 0);
     checkAbs("inverse: p_w/p_wsat = 1.2 gives alpha_l = 1",
         kl.alphaL(1.2, 300), 1, 0);
-    checkAbs("inverse above the critical point (700 K) gives 0",
-        kl.alphaL(0.5, 700), 0, 0);
+    checkAbs("inverse at the critical point of vargaftik (647.15 K) gives 0",
+        kl.alphaL(0.5, 647.15), 0, 0);
+    expectError
+    (
+        "inverse above the critical point (700 K): the law refuses it",
+        [&](){ return kl.alphaL(0.5, 700); }, {"vargaftik", "700"}
+    );
 
     // Field versions
     scalarField a(2), T(2);
@@ -959,6 +1096,264 @@ void testConductivity()
         law("conductivityModel constant; constantCoeffs { kappa 1.0; }");
     checkAbs("constant (the report's k_e = 1.0): independent of alpha_l",
         cst->kappaPartiallySaturated(kS, kL, kV, 0.3, phi), 1.0, 0);
+}
+
+
+// * * * * * * * * * * * pendularMedium at the critical point * * * * * * * //
+
+//- The saturation state of pendularMedium (default laws: wagnerPruss and
+//  vargaftik) below, at and above its dry-out temperature T_d (the
+//  critical point, 647.096 K), from a one-cell case: never a law outside
+//  its range, finite to 1500 K, and the state at fixed water content W
+//  (alpha_l, rho_w, E, dE/dT, d rho_w/dT at fixed W, d rho_w/dW)
+//  continuous across T_d to rounding
+void testMediumCriticalPoint(const fileName& caseDir)
+{
+    section("pendularMedium: saturation state across the critical point");
+
+    Time runTime
+    (
+        Time::controlDictName, caseDir.path(), fileName(caseDir.name())
+    );
+    fvMesh mesh
+    (
+        IOobject(fvMesh::defaultRegion, runTime.timeName(), runTime,
+            IOobject::MUST_READ)
+    );
+    const pendularMedium medium(mesh);
+    const scalar phi = medium.porosity()[0];
+    const scalar Td = medium.dryOutTemperature();
+    const scalar pa = 1e5;
+
+    checkAbs("dry-out temperature T_d = T_c (wagnerPruss, vargaftik)",
+        Td, 647.096, 0);
+    checkAbs("lowest temperature of the laws", medium.minimumTemperature(),
+        248.15, 0);
+
+    // Any call of a law outside its range would throw: count them
+    FatalError.throwExceptions();
+    label nThrown = 0;
+
+    // The state of a cell holding W at T: alpha, rho_w, E, C = dE/dT,
+    // d rho_w/dT at fixed W, d rho_w/dW (as the solver's Jacobians)
+    struct cellState { scalar alpha, rhoW, E, C, dRhoWdT, dRhoWdW; };
+    const auto state = [&](const scalar W, const scalar T)
+    {
+        const pendularMedium::saturationState sat = medium.saturation(T);
+        const scalar a = medium.alphaL(W, sat, phi, 0);
+        const scalar rhoW = medium.vapourDensity(W, a, sat, phi);
+        const scalar dWda = medium.dWaterContentdAlphaL(a, sat, phi);
+        return cellState
+        {
+            a, rhoW, medium.energy(T, W, a, rhoW, pa, phi),
+            medium.energyCapacity(sat, W, a, pa, phi),
+            medium.dVapourDensitydTAtFixedW(a, sat, phi),
+            a > 0 && dWda > 0
+          ? medium.dVapourDensitydAlphaL(a, sat)/dWda : 1/phi
+        };
+    };
+
+    // Water contents: vapour densities W/phi from 1e-6 to 60 kg/m3
+    // (relative humidity at T_d from 1.4e-8 to 0.81; the saturated vapour
+    // at T_d holds 73.9 kg/m3), and a tiny and a dry one
+    const scalar rhoWs[] = {0, 1e-30, 1e-6, 1e-3, 0.1, 1, 10, 60};
+    const scalar TdBelow = std::nextafter(Td, scalar(0));
+    scalar worstJump = 0, worstAlpha = 0, worstTrace = 0, worstSlope = 0;
+    try
+    {
+        for (const scalar rw : rhoWs)
+        {
+            const scalar W = phi*rw;
+            const cellState b = state(W, TdBelow);
+            const cellState a = state(W, Td);
+            worstAlpha = max(worstAlpha, b.alpha);
+            const scalar Cscale = max(mag(b.C), mag(a.C));
+            if (rw < 1e-6)
+            {
+                // Traces (W/phi < 1e-19 kg/m3 at T_d) are held as liquid
+                // below T_d, where the vapour of the menisci vanishes
+                // faster than the liquid: a jump below any tolerance
+                worstTrace = max(worstTrace, mag(a.rhoW - b.rhoW));
+                continue;
+            }
+            // Latent heat of the vapour per kg, for d rho_w/dT in dE/dT
+            const scalar hLatent =
+                medium.vapourEnthalpy(Td)
+              - medium.CpLiquid()*(Td - medium.latentHeatTemperature());
+            const scalar jumps[] =
+            {
+                mag(a.rhoW - b.rhoW)/rw,
+                mag(a.E - b.E)/max(mag(b.E), VSMALL),
+                mag(a.C - b.C)/Cscale,
+                // d rho_w/dT through its latent heat, against dE/dT
+                phi*hLatent*mag(a.dRhoWdT - b.dRhoWdT)/Cscale,
+                mag(a.dRhoWdW - b.dRhoWdW)*phi
+            };
+            for (const scalar j : jumps)
+            {
+                worstJump = max(worstJump, j);
+            }
+            // d rho_w/dT relative to rho_w/T: the slope at fixed alpha
+            // grows like 1/(Tc(sigma) - T) near the critical point
+            worstSlope = max(worstSlope, mag(a.dRhoWdT - b.dRhoWdT)*Td/rw);
+            checkAbs
+            (
+                fmt("liquid-free at T_d: alpha_l = 0, rho_w = W/phi = %g", rw),
+                mag(a.alpha) + mag(a.rhoW - rw), 0, 1e-15*rw
+            );
+        }
+    }
+    catch (const Foam::error& err)
+    {
+        ++nThrown;
+        Info<< "    unexpected error: " << err.message().c_str() << endl;
+    }
+    checkAbs("alpha_l just below T_d, W/phi <= 60 kg/m3 (-> 0)",
+        worstAlpha, 0, 1e-15);
+    checkAbs
+    (
+        "state jump across T_d, W/phi 1e-6-60 (rho_w, E, dE/dT, its"
+        " latent part, d rho_w/dW; max rel)", worstJump, 0, 1e-12
+    );
+    checkAbs
+    (
+        "rho_w jump across T_d, W/phi = 0, 1e-30 kg/m3 [kg/m3]",
+        worstTrace, 0, 1e-18
+    );
+    checkAbs
+    (
+        "d rho_w/dT (fixed W) jump across T_d, relative to rho_w/T",
+        worstSlope, 0, 1e-7
+    );
+
+    // Approach: alpha_l decreases to 0 as T -> T_d at fixed W (1 kg/m3 of
+    // vapour), the vapour density tends to W/phi
+    {
+        bool decreasing = true;
+        scalar aPrev = GREAT;
+        const scalar W = phi*1.0;
+        scalar rhoWLast = 0;
+        for (const scalar dT : {60.0, 20.0, 5.0, 1.0, 0.1, 1e-3, 1e-6, 1e-9})
+        {
+            const cellState c = state(W, Td - dT);
+            if (!(c.alpha < aPrev)) decreasing = false;
+            aPrev = c.alpha;
+            rhoWLast = c.rhoW;
+        }
+        checkTrue("alpha_l decreases to 0 as T -> T_d (W/phi = 1 kg/m3)",
+            decreasing, aPrev, 1e-15, "<");
+        checkRel("rho_w -> W/phi as T -> T_d", rhoWLast, 1.0, 1e-13);
+    }
+
+    // Finite from 248.15 to 1500 K, every 0.25 K, for every W; above T_d
+    // all the water is vapour and d rho_w/dT at fixed W is 0
+    {
+        bool finite = true, dryAbove = true;
+        label n = 0;
+        try
+        {
+            for (label i = 0; i <= 5000; ++i)
+            {
+                const scalar T = 248.15 + 0.25*i;
+                for (const scalar rw : rhoWs)
+                {
+                    const cellState c = state(phi*rw, T);
+                    const pendularMedium::saturationState sat =
+                        medium.saturation(T);
+                    ++n;
+                    for
+                    (
+                        const scalar v
+                      : {c.alpha, c.rhoW, c.E, c.C, c.dRhoWdT, c.dRhoWdW,
+                         sat.pSat, sat.kelvinLength, sat.dLnPSatdT,
+                         sat.dKelvinLengthdT,
+                         medium.saturationPressure(T)}
+                    )
+                    {
+                        if (!std::isfinite(v)) finite = false;
+                    }
+                    if
+                    (
+                        T >= Td
+                     && (c.alpha != 0 || c.rhoW != rw || c.dRhoWdT != 0
+                      || !sat.liquidFree)
+                    )
+                    {
+                        dryAbove = false;
+                    }
+                }
+            }
+        }
+        catch (const Foam::error& err)
+        {
+            ++nThrown;
+            finite = false;
+            Info<< "    unexpected error: " << err.message().c_str() << endl;
+        }
+        checkTrue("state finite 248.15-1500 K (states checked)", finite, n,
+            0, "finite");
+        checkTrue("above T_d: alpha_l = 0, rho_w = W/phi, d rho_w/dT = 0",
+            dryAbove, 0, 0, "==");
+    }
+
+    // Relative humidities above T_c: p_wsat held at p_c; below the laws'
+    // range (an iterate the solver rejects): held, no error
+    checkRel("saturationPressure(1500 K) = p_wsat(T_d) = p_c",
+        medium.saturationPressure(1500), 22.064e6, 1e-14);
+    checkRel("saturationPressure continuous at T_d",
+        medium.saturationPressure(TdBelow), medium.saturationPressure(Td),
+        1e-12);
+    try
+    {
+        checkTrue("saturation(200 K), below the laws: finite, no error",
+            std::isfinite(medium.saturation(200).pSat), 0, 0, "finite");
+    }
+    catch (const Foam::error&)
+    {
+        ++nThrown;
+    }
+    checkAbs("no law evaluated outside its range (errors thrown)",
+        nThrown, 0, 0);
+
+    // The inversion alpha_l(W, T) from any guess (a guess far below the
+    // answer once made it stop at the dry limit): W recovered to 1e-13
+    {
+        scalar worst = 0;
+        for (const scalar T : {293.15, 373.15, 500.0, 623.0, 640.0, 647.0})
+        {
+            const pendularMedium::saturationState sat = medium.saturation(T);
+            for (const scalar W : {1e-120, 1e-20, 1e-8, 1e-4, 7.4e-3, 0.5, 5.0})
+            {
+                for (const scalar guess : {0.0, 1e-100, 1e-60, 1e-15, 0.5})
+                {
+                    const scalar a = medium.alphaL(W, sat, phi, guess);
+                    const scalar Wa =
+                        phi*(a*medium.rhoL() + (1 - a)
+                       *medium.vapourDensity(W, a, sat, phi));
+                    worst = max(worst, mag(Wa - W)/W);
+                }
+            }
+        }
+        checkAbs("alpha_l(W, T) from any guess holds W (max rel)",
+            worst, 0, 1e-12);
+    }
+
+    // Liquid where none can be
+    {
+        const pendularMedium::saturationState sat = medium.saturation(700);
+        checkTrue("above T_d, W/phi = 80 kg/m3 > saturated vapour at T_d:"
+            " liquid near critical", medium.liquidNearCritical(phi*80, 0, sat,
+            phi), 80, 73.9, ">");
+        checkTrue("above T_d, W/phi = 10 kg/m3: vapour, accepted",
+            !medium.liquidNearCritical(phi*10, 0, sat, phi), 10, 73.9, "<");
+        const pendularMedium::saturationState s640 = medium.saturation(640);
+        const scalar aWet = medium.alphaL(phi*100, s640, phi, 0);
+        checkTrue("640 K, W/phi = 100 kg/m3 (liquid): liquid near critical",
+            medium.liquidNearCritical(phi*100, aWet, s640, phi), aWet, 1e-9,
+            ">");
+    }
+
+    FatalError.dontThrowExceptions();
 }
 
 
@@ -1209,6 +1604,12 @@ int main(int argc, char* argv[])
     testPermeability();
     testConductivity();
     testBadInput();
+
+    // testPendularModels -medium CASE: pendularMedium from a one-cell case
+    if (argc == 3 && std::string(argv[1]) == "-medium")
+    {
+        testMediumCriticalPoint(fileName(argv[2]));
+    }
 
     Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
         << endl;

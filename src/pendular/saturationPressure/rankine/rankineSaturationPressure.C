@@ -49,6 +49,7 @@ Foam::saturationPressureLaws::rankine::rankine(const dictionary& coeffs)
 
 Foam::scalar Foam::saturationPressureLaws::rankine::pSat(const scalar T) const
 {
+    checkRange(T);
     return p0_*std::exp(A_ - B_/T);
 }
 

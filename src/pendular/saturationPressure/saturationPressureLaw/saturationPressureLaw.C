@@ -12,12 +12,32 @@ namespace Foam
     defineRunTimeSelectionTable(saturationPressureLaw, dictionary);
 }
 
+const Foam::scalar Foam::saturationPressureLaw::criticalTemperature = 647.096;
+const Foam::scalar Foam::saturationPressureLaw::supercooledLimit = 248.15;
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::saturationPressureLaw::saturationPressureLaw(const dictionary& coeffs)
 :
-    coeffs_(coeffs)
+    coeffs_(coeffs),
+    Tmin_(supercooledLimit),
+    Tmax_(criticalTemperature)
 {}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::saturationPressureLaw::rangeError(const scalar T) const
+{
+    FatalErrorInFunction
+        << "saturationPressureLaw " << type() << " evaluated at T = " << T
+        << " K, outside its valid range [" << Tmin_ << ", " << Tmax_
+        << "] K" << nl
+        << "    (no liquid-vapour saturation above the critical point of"
+        << " water, " << criticalTemperature << " K; below " << Tmin_
+        << " K the liquid would be ice)"
+        << exit(FatalError);
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 

@@ -44,27 +44,16 @@ void Foam::saturationPressureLaws::wagnerPruss::lnReduced
     scalar& dlnpdT
 ) const
 {
-    const scalar tau = 1 - T/Tc;
-
-    scalar f, df;
-    if (tau > 0)
-    {
-        const scalar s = std::sqrt(tau);
-        const scalar t3 = tau*tau*tau;
-        const scalar t7 = t3*t3*tau;
-        f =
-            a1*tau + a2*tau*s + a3*t3 + a4*t3*s + a5*t3*tau + a6*t7*s;
-        df =
-            a1 + 1.5*a2*s + 3*a3*tau*tau + 3.5*a4*tau*tau*s + 4*a5*t3
-          + 7.5*a6*t3*t3*s;
-    }
-    else
-    {
-        // At and above the critical point: the first term only, continuous
-        // with its derivative at tau = 0
-        f = a1*tau;
-        df = a1;
-    }
+    // T in [Tmin, T_c] (checked by the callers): tau >= 0
+    const scalar tau = max(1 - T/Tc, scalar(0));
+    const scalar s = std::sqrt(tau);
+    const scalar t3 = tau*tau*tau;
+    const scalar t7 = t3*t3*tau;
+    const scalar f =
+        a1*tau + a2*tau*s + a3*t3 + a4*t3*s + a5*t3*tau + a6*t7*s;
+    const scalar df =
+        a1 + 1.5*a2*s + 3*a3*tau*tau + 3.5*a4*tau*tau*s + 4*a5*t3
+      + 7.5*a6*t3*t3*s;
 
     lnp = Tc/T*f;
     dlnpdT = -(df + lnp)/T;
@@ -78,7 +67,9 @@ Foam::saturationPressureLaws::wagnerPruss::wagnerPruss
 )
 :
     saturationPressureLaw(coeffs)
-{}
+{
+    Tmax_ = Tc;
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -87,6 +78,7 @@ Foam::scalar Foam::saturationPressureLaws::wagnerPruss::pSat
     const scalar T
 ) const
 {
+    checkRange(T);
     scalar lnp, dlnpdT;
     lnReduced(T, lnp, dlnpdT);
     return pc*std::exp(lnp);
@@ -98,6 +90,7 @@ Foam::scalar Foam::saturationPressureLaws::wagnerPruss::dpSatdT
     const scalar T
 ) const
 {
+    checkRange(T);
     scalar lnp, dlnpdT;
     lnReduced(T, lnp, dlnpdT);
     return pc*std::exp(lnp)*dlnpdT;

@@ -61,6 +61,7 @@ Foam::surfaceTensionLaws::hsiehKaviany::hsiehKaviany(const dictionary& coeffs)
             << " the triple point 273.16 K in dictionary " << coeffs.name()
             << nl << exit(FatalIOError);
     }
+    Tmax_ = Tc_ - dTm_;
 }
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -70,6 +71,7 @@ Foam::scalar Foam::surfaceTensionLaws::hsiehKaviany::sigma
     const scalar T
 ) const
 {
+    checkRange(T);
     const scalar x = 1 - (T - 273.16)/span_;
     return (x > 0) ? sigma0_*std::pow(x, n_) : scalar(0);
 }
@@ -80,6 +82,7 @@ Foam::scalar Foam::surfaceTensionLaws::hsiehKaviany::dSigmadT
     const scalar T
 ) const
 {
+    checkRange(T);
     const scalar x = 1 - (T - 273.16)/span_;
     return (x > 0) ? -sigma0_*n_*std::pow(x, n_ - 1)/span_ : scalar(0);
 }

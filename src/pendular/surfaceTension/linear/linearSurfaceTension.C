@@ -37,18 +37,23 @@ Foam::surfaceTensionLaws::linear::linear(const dictionary& coeffs)
             checkedRead::nonNegative()
         ).value()
     )
-{}
+{
+    // The zero of the law
+    Tmax_ = b_ > 0 ? 273.15 + a_/b_ : GREAT;
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::surfaceTensionLaws::linear::sigma(const scalar T) const
 {
+    checkRange(T);
     return max(a_ - b_*(T - 273.15), scalar(0));
 }
 
 
 Foam::scalar Foam::surfaceTensionLaws::linear::dSigmadT(const scalar T) const
 {
+    checkRange(T);
     return (a_ - b_*(T - 273.15) > 0) ? -b_ : scalar(0);
 }
 

@@ -16,8 +16,25 @@ namespace Foam
 
 Foam::surfaceTensionLaw::surfaceTensionLaw(const dictionary& coeffs)
 :
-    coeffs_(coeffs)
+    coeffs_(coeffs),
+    Tmin_(248.15),
+    Tmax_(GREAT)
 {}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::surfaceTensionLaw::rangeError(const scalar T) const
+{
+    FatalErrorInFunction
+        << "surfaceTensionLaw " << type() << " evaluated at T = " << T
+        << " K, outside its valid range [" << Tmin_ << ", " << Tmax_
+        << "] K" << nl
+        << "    (no liquid surface above the law's critical temperature "
+        << Tmax_ << " K, where sigma = 0; below " << Tmin_
+        << " K the liquid would be ice)"
+        << exit(FatalError);
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 

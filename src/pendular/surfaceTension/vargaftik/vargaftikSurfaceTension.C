@@ -52,12 +52,15 @@ Foam::surfaceTensionLaws::vargaftik::vargaftik(const dictionary& coeffs)
             coeffs, "Tc", dimTemperature, 647.15, checkedRead::positive()
         ).value()
     )
-{}
+{
+    Tmax_ = Tc_;
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::surfaceTensionLaws::vargaftik::sigma(const scalar T) const
 {
+    checkRange(T);
     const scalar tau = (Tc_ - T)/Tc_;
     return (tau > 0) ? B_*std::pow(tau, mu_)*(1 + b_*tau) : scalar(0);
 }
@@ -68,6 +71,7 @@ Foam::scalar Foam::surfaceTensionLaws::vargaftik::dSigmadT
     const scalar T
 ) const
 {
+    checkRange(T);
     const scalar tau = (Tc_ - T)/Tc_;
     if (tau <= 0)
     {
