@@ -19,7 +19,7 @@ by about (h/rho)^2/8 = 2e-5 for h = 5 mm; what is left is the ragged rim
 (the edge faces where the bowl meets the ground), about h/2 x the rim's
 length = 0.5 % at most if the rim is missed by half a cell.
 
-Isotherm depths of TMax after 1 h at 700 C on dry clay (100 C about 9 cm,
+Isotherm depths of TMax after 1 h at 700 C on dry clay (100 C about 7.8 cm,
 290 C about 4.1 cm below the bowl): within 2 mm of the wedge's, under the
 centre and along the normal at 30 degrees. The wedge has 2-4 mm cells
 normal to the bowl through its refined layer, the snapped mesh 2-3.5 mm
