@@ -228,6 +228,9 @@ def check_budget_file(name, budget_file, scratch):
 # script wrote to figures.csv (name,value,unit, etc/python/hearthTutorial.py)
 # against the values its README prints, listed in the test's file
 #   <name>  <value as printed in the README>  <tolerance>   # why
+# ('_' in the printed value stands for a space, as in 142_857; the
+# tolerance 'below' checks |value| < printed, for a bound the README
+# states).
 # The printed value must also appear in one of the READMEs given (as a
 # number: not inside a longer one), so that a README edited without its
 # test, or a test without its README, fails.
@@ -264,20 +267,26 @@ def check_figures(name, expected, figures_csv, readmes):
     rows = [r for r in rows if r]
     for r in rows:
         if len(r) != 3:
-            c.true('%s: a line is <name> <printed> <tolerance>' % expected,
+            c.true('%s: a line is <name> <printed> <tolerance|below>' % expected,
                    False, ' '.join(r))
             continue
-        fig, printed, tol = r[0], r[1], float(r[2])
+        fig, printed = r[0], r[1].replace('_', ' ')
         if fig not in figures:
             c.true('%s in figures.csv' % fig, False, 'missing')
             continue
         value, unit = figures[fig]
-        ok = abs(value - float(printed)) <= tol
+        ref = float(printed.replace(' ', ''))
+        if r[2] == 'below':             # the README states a bound
+            ok = abs(value) < ref
+            test = '|value| < %s' % printed
+        else:
+            ok = abs(value - ref) <= float(r[2])
+            test = '|diff| %.3g <= %s' % (abs(value - ref), r[2])
         inReadme = printed_in(text, printed)
         c.failed += not (ok and inReadme)
-        print('  %s %-32s %12.6g %-4s README %-9s |diff| %.3g <= %.3g%s'
+        print('  %s %-32s %12.6g %-4s README %-9s %s%s'
               % ('ok  ' if ok and inReadme else 'FAIL', fig, value, unit,
-                 printed, abs(value - float(printed)), tol,
+                 printed, test,
                  '' if inReadme else '  (%s not in the README)' % printed))
     c.true('the test lists figures', bool(rows), expected)
     c.done()
