@@ -199,6 +199,47 @@ def wedge_to_full(blockMeshDict='system/blockMeshDict'):
 
 
 # --------------------------------------------------------------------------
+# Balances of a pendularFoam log
+
+def pendular_balances(log):
+    """Every write's balances of a pendularFoam log -> list of dicts:
+    time, and for each of 'water' [kg], 'air' [kg], 'energy' [J] a dict
+    out_<patch>, inDomain, stored, out, imbalance, relative; nOutside (cells
+    above the pendular range), alphaLMin, alphaLMax."""
+    with open(log) as f:
+        text = f.read()
+    out = []
+    for block in re.split(r'\n(?=Water balance at t = )', text)[1:]:
+        block = block.split('\n\n')[0]
+        res = {'time': float(re.match(r'Water balance at t = (\S+)',
+                                      block).group(1))}
+        for what in ('Water', 'Air', 'Energy'):
+            m = re.search(what + r' balance at t = .*?\n((?:    .*\n?)*)',
+                          block)
+            d = {}
+            for k, v in re.findall(r'out through (\S+) = (\S+)', m.group(1)):
+                d['out_' + k] = float(v)
+            for key, pat in (('inDomain', r'in the domain\s+= (\S+)'),
+                             ('stored', r'stored change\s+= (\S+)'),
+                             ('out', r'out \(all patches\)\s+= (\S+)'),
+                             ('imbalance', r'imbalance\s+= (\S+)'),
+                             ('relative', r'\(relative (\S+?)\)')):
+                mm = re.search(pat, m.group(1))
+                if mm:
+                    d[key] = float(mm.group(1))
+            res[what.lower()] = d
+        m = re.search(r'Pendular range: (\d+) cells', block)
+        if m:
+            res['nOutside'] = int(m.group(1))
+        m = re.search(r'alpha_l (\S+) to (\S+), T', block)
+        if m:
+            res['alphaLMin'], res['alphaLMax'] = float(m.group(1)), \
+                float(m.group(2))
+        out.append(res)
+    return out
+
+
+# --------------------------------------------------------------------------
 # hearthAlteration
 
 def alteration_summary(case='.', time=None):
