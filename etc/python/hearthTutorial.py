@@ -138,6 +138,26 @@ def time_dirs(path):
                   key=lambda d: float(os.path.basename(d)))
 
 
+def read_axis_set(timeDir, name='axis'):
+    """A raw 'sets' file <timeDir>/<name>_<field1>_<field2>....xy of a line
+    down z (columns z, then one per field) -> (depths [cm, positive down,
+    increasing], dict field -> values in the same order)."""
+    files = glob.glob(os.path.join(timeDir, name + '_*.xy'))
+    if len(files) != 1:
+        raise ValueError('expected one %s_*.xy in %s' % (name, timeDir))
+    fields = os.path.basename(files[0])[len(name) + 1:-len('.xy')].split('_')
+    rows = []
+    with open(files[0]) as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            rows.append([float(x) for x in line.split()])
+    rows.sort(key=lambda r: -r[0])
+    return ([-100*r[0] for r in rows],
+            dict((fld, [r[i + 1] for r in rows])
+                 for i, fld in enumerate(fields)))
+
+
 # --------------------------------------------------------------------------
 # Energy balance of an ahcFoam log
 

@@ -19,7 +19,6 @@ and writes
 Standard library and etc/python/hearthTutorial.py only.
 """
 
-import glob
 import os
 import sys
 
@@ -35,24 +34,8 @@ ALTERATION = (100.0, 290.0)     # C: drying; reddening (Muhieddine 2009 §5.4)
 
 def read_profile(timeDir):
     """Cell-centre depths [cm] and a dict field -> values [K] of the axis
-    profile at one write time (raw set file: z and one column per field, in
-    the order of the file name axis_<field1>_<field2>.xy)"""
-    files = glob.glob(os.path.join(timeDir, 'axis_*.xy'))
-    if len(files) != 1:
-        sys.exit('hearthResults: expected one axis_*.xy in %s' % timeDir)
-    names = os.path.basename(files[0])[len('axis_'):-len('.xy')].split('_')
-    depth, vals = [], [[] for _ in names]
-    with open(files[0]) as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            depth.append(-100*v[0])
-            for c, x in zip(vals, v[1:]):
-                c.append(x)
-    order = sorted(range(len(depth)), key=lambda i: depth[i])
-    return ([depth[i] for i in order],
-            dict((n, [c[i] for i in order]) for n, c in zip(names, vals)))
+    profile at one write time"""
+    return ht.read_axis_set(timeDir)
 
 
 def plateau(times, TC, level=100.0, band=PLATEAU_BAND):

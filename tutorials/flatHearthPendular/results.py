@@ -16,7 +16,6 @@ checked by tests/tutorialFlatHearthPendular), and prints the summary
 (results.txt). Standard library and etc/python/hearthTutorial.py only.
 """
 
-import glob
 import os
 import re
 import sys
@@ -46,17 +45,10 @@ def value_at(rows, col, t):
 
 def axis_profile(case):
     """Last write time, {field: [(depth_cm, value)]} down the axis"""
-    dirs = glob.glob(os.path.join(case, 'postProcessing/axisProfile/*'))
-    t = max(dirs, key=lambda d: float(os.path.basename(d)))
-    path = glob.glob(os.path.join(t, 'axis_*.xy'))[0]
-    fields = os.path.basename(path)[5:-3].split('_')
-    prof = {f: [] for f in fields}
-    with open(path) as fh:
-        for line in fh:
-            v = [float(x) for x in line.split()]
-            for f, x in zip(fields, v[1:]):
-                prof[f].append((-100*v[0], x))
-    return float(os.path.basename(t)), prof
+    t = ht.time_dirs(os.path.join(case, 'postProcessing/axisProfile'))[-1]
+    depth, fields = ht.read_axis_set(t)
+    return (float(os.path.basename(t)),
+            dict((f, list(zip(depth, v))) for f, v in fields.items()))
 
 
 def crossing(profile, level, from_above=True):
