@@ -13,6 +13,7 @@ import hearthTutorial as ht       # noqa: E402
 
 P_ATM = 101325.0
 PROFILE_HOURS = (0.5, 1, 1.5, 3, 6, 9, 12)
+T_FRONT = {}        # (column, t [h]) -> T at the drying front [C]
 
 
 def internal_field(path):
@@ -85,6 +86,8 @@ def main(names):
             p = field(case, d, 'p', n)
             W = field(case, d, 'W', n)
             fr = front(zs, alpha, alpha0)
+            if fr is not None:
+                T_FRONT[(name, t/3600)] = interp(fr, zs, T) - 273.15
             hist[name].append((t/3600, [interp(z, zs, T) - 273.15 for z in (0.01, 0.02, 0.05)],
                                sum(W)*H/n, fr, max(p) - P_ATM, max(alpha)))
             if any(abs(t - 3600*h) < 1 for h in PROFILE_HOURS):
@@ -179,6 +182,7 @@ def figures(names, hist):
         h = hist[name]
         for t, Ts, w, fr, dp, am in h:
             fig.add('front_%s_%gh' % (name, t), fr and 100*fr, 'cm')
+            fig.add('Tfront_%s_%gh' % (name, t), T_FRONT.get((name, t)), 'C')
             fig.add('alphaMax_%s_%gh' % (name, t), am, '1')
             fig.add('pgMax_%s_%gh' % (name, t), dp, 'Pa')
         fig.add('alphaMax_%s' % name, max(r[5] for r in h), '1')
