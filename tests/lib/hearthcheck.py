@@ -223,8 +223,80 @@ def check_budget_file(name, budget_file, scratch):
     c.done()
 
 
+# --------------------------------------------------------------------------
+# Tutorial figures (tests/tutorial*/): the figures a tutorial's results
+# script wrote to figures.csv (name,value,unit, etc/python/hearthTutorial.py)
+# against the values its README prints, listed in the test's file
+#   <name>  <value as printed in the README>  <tolerance>   # why
+# ('_' in the printed value stands for a space, as in 142_857; the
+# tolerance 'below' checks |value| < printed, for a bound the README
+# states).
+# The printed value must also appear in one of the READMEs given (as a
+# number: not inside a longer one), so that a README edited without its
+# test, or a test without its README, fails.
+#   python3 hearthcheck.py figures NAME EXPECTED FIGURES_CSV README...
+
+
+def read_figures(path):
+    """figures.csv -> dict name -> (value, unit)"""
+    out = {}
+    with open(path) as f:
+        next(f)
+        for line in f:
+            r = line.strip().split(',')
+            if len(r) == 3:
+                out[r[0]] = (float(r[1]), r[2])
+    return out
+
+
+def printed_in(text, printed):
+    """printed (e.g. '520.5' or '-3.7e-12') stands as a number in text"""
+    return re.search(r'(?<![\d.])%s(?![\d])' % re.escape(printed),
+                     text) is not None
+
+
+def check_figures(name, expected, figures_csv, readmes):
+    c = Check(name + ' figures')
+    figures = read_figures(figures_csv)
+    text = ''
+    for r in readmes:
+        with open(r) as f:
+            text += f.read()
+    with open(expected) as f:
+        rows = [line.split('#')[0].split() for line in f]
+    rows = [r for r in rows if r]
+    for r in rows:
+        if len(r) != 3:
+            c.true('%s: a line is <name> <printed> <tolerance|below>' % expected,
+                   False, ' '.join(r))
+            continue
+        fig, printed = r[0], r[1].replace('_', ' ')
+        if fig not in figures:
+            c.true('%s in figures.csv' % fig, False, 'missing')
+            continue
+        value, unit = figures[fig]
+        ref = float(printed.replace(' ', ''))
+        if r[2] == 'below':             # the README states a bound
+            ok = abs(value) < ref
+            test = '|value| < %s' % printed
+        else:
+            ok = abs(value - ref) <= float(r[2])
+            test = '|diff| %.3g <= %s' % (abs(value - ref), r[2])
+        inReadme = printed_in(text, printed)
+        c.failed += not (ok and inReadme)
+        print('  %s %-32s %12.6g %-4s README %-9s %s%s'
+              % ('ok  ' if ok and inReadme else 'FAIL', fig, value, unit,
+                 printed, test,
+                 '' if inReadme else '  (%s not in the README)' % printed))
+    c.true('the test lists figures', bool(rows), expected)
+    c.done()
+
+
 if __name__ == '__main__':
     if len(sys.argv) == 5 and sys.argv[1] == 'budget':
         check_budget_file(*sys.argv[2:])
-    print('usage: hearthcheck.py budget NAME COSTBUDGET SCRATCH')
+    if len(sys.argv) >= 6 and sys.argv[1] == 'figures':
+        check_figures(sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:])
+    print('usage: hearthcheck.py budget NAME COSTBUDGET SCRATCH\n'
+          '       hearthcheck.py figures NAME EXPECTED FIGURES_CSV README...')
     sys.exit(2)

@@ -1,13 +1,19 @@
 """column1D results: profiles against depth and histories of each column
 run/<name> (pendularFoam's written fields, one every 30 min), CSV files,
-gnuplot PNGs and a summary on stdout.  Usage: columnResults.py NAME..."""
+gnuplot PNGs, figures.csv (name,value,unit of the figures README.md
+states) and a summary on stdout.  Usage: columnResults.py NAME..."""
 import os
 import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402
+
 P_ATM = 101325.0
 PROFILE_HOURS = (0.5, 1, 1.5, 3, 6, 9, 12)
+T_FRONT = {}        # (column, t [h]) -> T at the drying front [C]
 
 
 def internal_field(path):
@@ -80,6 +86,8 @@ def main(names):
             p = field(case, d, 'p', n)
             W = field(case, d, 'W', n)
             fr = front(zs, alpha, alpha0)
+            if fr is not None:
+                T_FRONT[(name, t/3600)] = interp(fr, zs, T) - 273.15
             hist[name].append((t/3600, [interp(z, zs, T) - 273.15 for z in (0.01, 0.02, 0.05)],
                                sum(W)*H/n, fr, max(p) - P_ATM, max(alpha)))
             if any(abs(t - 3600*h) < 1 for h in PROFILE_HOURS):
@@ -162,6 +170,32 @@ unset multiplot
                       % (t, Ts[0], Ts[1], Ts[2], w, '-' if fr is None else '%.4f' % fr, dp, am))
         print('    (T in C, water in kg/m2, front = depth of alpha_l = alpha_0/2 [m],'
               ' p_g max = largest p_g - p_atm [Pa])')
+    figures(names, hist)
+
+
+def figures(names, hist):
+    """figures.csv: per column the front, largest alpha_l and gas
+    overpressure at each write time and over the run, steps and
+    balances"""
+    fig = ht.Figures()
+    for name in names:
+        h = hist[name]
+        for t, Ts, w, fr, dp, am in h:
+            fig.add('front_%s_%gh' % (name, t), fr and 100*fr, 'cm')
+            fig.add('Tfront_%s_%gh' % (name, t), T_FRONT.get((name, t)), 'C')
+            fig.add('alphaMax_%s_%gh' % (name, t), am, '1')
+            fig.add('pgMax_%s_%gh' % (name, t), dp, 'Pa')
+        fig.add('alphaMax_%s' % name, max(r[5] for r in h), '1')
+        fig.add('pgMax_%s' % name, max(r[4] for r in h), 'Pa')
+        log = os.path.join('run', name, 'log.pendularFoam')
+        steps, rejected, exe, _ = ht.log_stats(log)
+        fig.add('steps_%s' % name, steps, '1')
+        fig.add('rejected_%s' % name, rejected, '1')
+        bal = ht.pendular_balances(log)
+        for q in ('water', 'air', 'energy'):
+            fig.add('largestRelativeImbalance_%s_%s' % (q, name),
+                    max(abs(b[q]['relative']) for b in bal), '1')
+    fig.write('figures.csv')
 
 
 if __name__ == '__main__':

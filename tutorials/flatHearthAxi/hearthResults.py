@@ -13,77 +13,29 @@ and writes
     TMax_axis.csv   depth_cm, TMax at the end of the fire and at the end of
                     the run [C], one row per cell of the axis column
     results.txt     the summary printed at the end
+    figures.csv     name,value,unit of every result figure README.md states
+                    (checked by tests/tutorialFlatHearthAxi)
 
-Only the Python standard library is used.
+Standard library and etc/python/hearthTutorial.py only.
 """
 
-import glob
-import math
 import os
-import re
 import sys
 
-T0 = 273.15             # K
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402  (etc/python/hearthTutorial.py)
+
+T0 = ht.T0
 FIRE_END = 21600.0      # s, end of the 700 C fire (0/T)
 PLATEAU_BAND = 5.0      # K: the "100 C plateau" is 100 +- 5 C
 ALTERATION = (100.0, 290.0)     # C: drying; reddening (Muhieddine 2009 §5.4)
 
 
-def read_probes(path):
-    """Probe depths [cm, positive down], times [s], columns of T [K]"""
-    depths, times, cols = [], [], None
-    with open(path) as f:
-        for line in f:
-            m = re.match(r'#\s*Probe\s+\d+\s+\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)',
-                         line)
-            if m:
-                depths.append(-100*float(m.group(3)))
-                continue
-            if line.startswith('#') or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            if cols is None:
-                cols = [[] for _ in v[1:]]
-            times.append(v[0])
-            for c, x in zip(cols, v[1:]):
-                c.append(x)
-    if cols is None or len(cols) != len(depths):
-        sys.exit('hearthResults: no probe data in %s' % path)
-    return depths, times, cols
-
-
 def read_profile(timeDir):
     """Cell-centre depths [cm] and a dict field -> values [K] of the axis
-    profile at one write time (raw set file: z and one column per field, in
-    the order of the file name axis_<field1>_<field2>.xy)"""
-    files = glob.glob(os.path.join(timeDir, 'axis_*.xy'))
-    if len(files) != 1:
-        sys.exit('hearthResults: expected one axis_*.xy in %s' % timeDir)
-    names = os.path.basename(files[0])[len('axis_'):-len('.xy')].split('_')
-    depth, vals = [], [[] for _ in names]
-    with open(files[0]) as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            depth.append(-100*v[0])
-            for c, x in zip(vals, v[1:]):
-                c.append(x)
-    order = sorted(range(len(depth)), key=lambda i: depth[i])
-    return ([depth[i] for i in order],
-            dict((n, [c[i] for i in order]) for n, c in zip(names, vals)))
-
-
-def depth_reached(depth, TMaxC, level):
-    """Deepest depth [cm] at which TMax = level [C], linear between cell
-    centres (TMax decreases downward); None if the top cell is below it"""
-    if TMaxC[0] < level:
-        return None
-    for i in range(1, len(depth)):
-        if TMaxC[i] < level:
-            a, b = TMaxC[i - 1], TMaxC[i]
-            return depth[i - 1] + (level - a)/(b - a)*(depth[i] - depth[i - 1])
-    return depth[-1]
+    profile at one write time"""
+    return ht.read_axis_set(timeDir)
 
 
 def plateau(times, TC, level=100.0, band=PLATEAU_BAND):
@@ -107,32 +59,6 @@ def plateau(times, TC, level=100.0, band=PLATEAU_BAND):
     return tIn, tOut, inside
 
 
-def energy_balance(log):
-    """The last energy balance block of the log: dict name -> value"""
-    blocks = open(log).read().split('Energy balance at t = ')
-    if len(blocks) < 2:
-        return None
-    b = blocks[-1]
-    res = {'time': float(b.split()[0])}
-    for m in re.finditer(r'heat in through (\S+) = (\S+)', b):
-        res['in_' + m.group(1)] = float(m.group(2))
-    m = re.search(r'heat in \(all patches\) = (\S+)', b)
-    res['in'] = float(m.group(1))
-    m = re.search(r'stored change\s+= (\S+) \(latent (\S+),', b)
-    res['stored'], res['latent'] = float(m.group(1)), float(m.group(2))
-    m = re.search(r'relative (\S+)\)', b)
-    res['relative'] = float(m.group(1))
-    return res
-
-
-def latentHeat():
-    """L [J/kg] of constant/porousProperties (energyConsistent: the latent
-    enthalpy is L x the mass of water evaporated)"""
-    m = re.search(r'latentHeat\s+([^;\s]+)\s*;',
-                  open('constant/porousProperties').read())
-    return float(m.group(1)) if m else float('nan')
-
-
 def hours(t):
     return '%.2f h' % (t/3600.0)
 
@@ -140,9 +66,11 @@ def hours(t):
 def main():
     out = []
     say = out.append
+    fig = ht.Figures()
 
     # ---- sensors ----------------------------------------------------------
-    depths, times, cols = read_probes('postProcessing/probes/0/T')
+    locations, times, cols = ht.read_probes('postProcessing/probes/0/T')
+    depths = [-100*p[2] for p in locations]
     colsC = [[x - T0 for x in c] for c in cols]
     names = ['T_%gcm_C' % round(d, 3) for d in depths]
     with open('sensors.csv', 'w') as f:
@@ -153,19 +81,30 @@ def main():
 
     say('Sensors on the axis (sensors.csv, sensors.png):')
     for d, c in zip(depths, colsC):
-        iMax = max(range(len(c)), key=lambda i: c[i])
+        Tpeak, tPeak = ht.peak(times, c)
+        t100 = ht.crossing(times, c, 100.0)
+        t290 = ht.crossing(times, c, 290.0)
         tIn, tOut, inside = plateau(times, c)
-        line = '  %4.1f cm: peak %6.1f C at %s' % (d, c[iMax], hours(times[iMax]))
+        line = '  %4.1f cm: peak %6.1f C at %s' % (d, Tpeak, hours(tPeak))
         if inside is not None:
-            line += ('; 100 +- %g C from %s to %s (%.0f min)'
-                     % (PLATEAU_BAND, hours(tIn), hours(tOut), inside/60))
+            line += ('; 100 C at %s, 100 +- %g C from %s to %s (%.0f min)'
+                     % (hours(t100), PLATEAU_BAND, hours(tIn), hours(tOut),
+                        inside/60))
         else:
             line += '; does not pass 100 +- %g C' % PLATEAU_BAND
+        line += '; 290 C at %s' % (hours(t290) if t290 else 'never')
         say(line)
+        s = '%gcm' % round(d, 3)
+        fig.add('peak_%s' % s, Tpeak, 'C')
+        fig.add('peakTime_%s' % s, tPeak/3600, 'h')
+        fig.add('t100_%s' % s, t100 and t100/3600, 'h')
+        fig.add('plateauIn_%s' % s, tIn and tIn/3600, 'h')
+        fig.add('plateauOut_%s' % s, tOut and tOut/3600, 'h')
+        fig.add('plateauMinutes_%s' % s, inside and inside/60, 'min')
+        fig.add('t290_%s' % s, t290 and t290/3600, 'h')
 
     # ---- TMax down the axis -----------------------------------------------
-    tDirs = sorted(glob.glob('postProcessing/axisProfile/*'),
-                   key=lambda p: float(os.path.basename(p)))
+    tDirs = ht.time_dirs('postProcessing/axisProfile')
     if not tDirs:
         sys.exit('hearthResults: no postProcessing/axisProfile output')
     tEnd = float(os.path.basename(tDirs[-1]))
@@ -184,36 +123,48 @@ def main():
 
     say('Maximum temperature on the axis (TMax_axis.csv, TMax_axis.png):')
     for level in ALTERATION:
-        dF = depth_reached(depth, TMaxFC, level)
-        dE = depth_reached(depth, TMaxC, level)
+        dF = ht.depth_reached(depth, TMaxFC, level)
+        dE = ht.depth_reached(depth, TMaxC, level)
         fmt = lambda d: ('%.2f cm' % d) if d is not None else 'not reached'
         say('  TMax = %3.0f C at depth %s at the end of the fire (%s),'
             ' %s at the end of the run (%s)'
             % (level, fmt(dF), hours(float(os.path.basename(tFire))),
                fmt(dE), hours(tEnd)))
+        fig.add('depth%g_fireEnd' % level, dF, 'cm')
+        fig.add('depth%g_runEnd' % level, dE, 'cm')
+        if level == 100.0 and dF is not None and dE is not None:
+            fig.add('dryingAfterFire', dE - dF, 'cm')
 
     # ---- energy balance ---------------------------------------------------
-    eb = energy_balance('log.ahcFoam')
+    eb = ht.energy_balance('log.ahcFoam')
     if eb:
-        sector = 1.0    # the balance is per wedge sector: x 2 pi/angle
-        m = re.search(r'tan\(degToRad\((\S+?)\)\)', open('system/blockMeshDict').read())
-        if m:
-            sector = math.pi/math.tan(math.radians(float(m.group(1))))
+        sector = ht.wedge_to_full()     # the balance is per wedge sector
+        water = sector*eb['latent']/ht.latent_heat()
         say('Energy balance at t = %s (log.ahcFoam; whole hearth = %.2f'
             ' x the wedge):' % (hours(eb['time']), sector))
         say('  heat in through the fire %.4g MJ, stored %.4g MJ'
             ' (latent %.4g MJ = %.3g kg of water evaporated)'
             % (sector*eb.get('in_fire', 0)/1e6, sector*eb['stored']/1e6,
-               sector*eb['latent']/1e6, sector*eb['latent']/latentHeat()))
+               sector*eb['latent']/1e6, water))
         far = sum(v for k, v in eb.items()
                   if k in ('in_side', 'in_bottom', 'in_ground'))
+        farFraction = -far/max(abs(eb.get('in_fire', 0)), 1e-300)
         say('  through side, bottom, ground: %.3g J (%.2g of the fire\'s);'
             ' relative imbalance %.3g'
-            % (far*sector, far/max(abs(eb.get('in_fire', 0)), 1e-300),
-               eb['relative']))
+            % (far*sector, -farFraction, eb['relative']))
         if abs(eb['relative']) > 1e-6:
             say('  WARNING: relative energy imbalance above 1e-6')
+        fig.add('heatInFire', sector*eb.get('in_fire', 0)/1e6, 'MJ')
+        fig.add('waterEvaporated', water, 'kg')
+        fig.add('latentHeat', sector*eb['latent']/1e6, 'MJ')
+        fig.add('heatLeavingFar', 100*farFraction, '%')
+        fig.add('relativeImbalance', eb['relative'], '1')
 
+    steps, rejected, _, _ = ht.log_stats('log.ahcFoam')
+    fig.add('steps', steps, '1')
+    fig.add('rejected', rejected, '1')
+
+    fig.write('figures.csv')
     text = '\n'.join(out) + '\n'
     with open('results.txt', 'w') as f:
         f.write(text)

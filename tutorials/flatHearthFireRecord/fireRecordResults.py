@@ -5,26 +5,25 @@ the same run with an insulated ground (insulatedGround/).
 Writes sensors.csv (the thermocouples of this case), fireFace.csv (the fire
 patch temperature at every step, C), alteration.csv (depths of the TMax
 thresholds on the axis, under the edge and outside the fire, both cases) and
-prints results.txt on stdout. Standard library only.
+prints results.txt on stdout; writes figures.csv (name,value,unit of every
+result figure README.md states, checked by tests/tutorialFlatHearthFireRecord).
+Standard library and etc/python/hearthTutorial.py only.
 """
-import bisect
-import csv
-import glob
 import os
-import re
 import shutil
+import sys
 
-C0 = 273.15
-WEDGE_TO_FULL = None        # read from log.hearthAlteration
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402
+
+C0 = ht.T0
 
 
 def read_sensors(case):
     path = os.path.join(case, 'postProcessing/thermocouples/0/sensors.csv')
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    names = rows[0][1:]
-    data = [[float(x) for x in r] for r in rows[1:]]
-    return path, names, data
+    header, data = ht.read_csv(path)
+    return path, header[1:], data
 
 
 def read_record(path, offset=240.0):
@@ -43,42 +42,20 @@ def read_record(path, offset=240.0):
     return times, temps
 
 
-def interpolate(times, values, t):
-    if t <= times[0]:
-        return values[0]
-    if t >= times[-1]:
-        return values[-1]
-    i = bisect.bisect_right(times, t) - 1
-    w = (t - times[i])/(times[i + 1] - times[i])
-    return values[i] + w*(values[i + 1] - values[i])
-
-
 def first_crossing(data, j, threshold):
-    for r in data:
-        if r[j] >= threshold:
-            return r[0]/3600
-    return None
+    """First sample at or above threshold [h] (no interpolation)"""
+    t = ht.first_sample([r[0] for r in data], [r[j] for r in data], threshold)
+    return None if t is None else t/3600
 
 
 def alteration(case):
-    files = sorted(glob.glob(os.path.join(
-        case, 'postProcessing/hearthAlteration/*/summary.csv')),
-        key=lambda p: float(p.split('/')[-2]))
-    with open(files[-1]) as f:
-        rows = list(csv.DictReader(f))
-    return rows
+    return ht.alteration_summary(case)
 
 
 def energy_balance(case):
-    with open(os.path.join(case, 'log.ahcFoam')) as f:
-        log = f.read()
-    block = log[log.rindex('Energy balance at t'):]
-    block = block[:block.index('liquid water')]
-    heat = dict(re.findall(r'heat in through (\w+) = (\S+)', block))
-    stored = float(re.search(r'stored change += (\S+)', block).group(1))
-    latent = float(re.search(r'latent (\S+),', block).group(1))
-    relative = float(re.search(r'relative (\S+)\)', block).group(1))
-    return {k: float(v) for k, v in heat.items()}, stored, latent, relative
+    eb = ht.energy_balance(os.path.join(case, 'log.ahcFoam'))
+    heat = dict((k[3:], v) for k, v in eb.items() if k.startswith('in_'))
+    return heat, eb['stored'], eb['latent'], eb['relative']
 
 
 def main():
@@ -96,7 +73,9 @@ def main():
         f.write('time_s,T_fire_patch_C\n')
         for t, T in face:
             f.write('%.10g,%.10g\n' % (t, T))
-    err = max(abs(T - interpolate(rec_t, rec_T, t)) for t, T in face)
+    err = max(abs(T - ht.interpolate(rec_t, rec_T, t)) for t, T in face)
+    fig = ht.Figures()
+    fig.add('fireRecordError', err, 'K')
     out.append('Fire patch against the record (linear between its rows), '
                'every step: max |difference| = %.2e K' % err)
 
@@ -118,6 +97,11 @@ def main():
             name, peak[j], peak[0]/3600,
             '%.2f' % t100 if t100 is not None else '-',
             '%.2f' % t290 if t290 is not None else '-', peak0[j]))
+        fig.add('peak_' + name, peak[j], 'C')
+        fig.add('peakTime_' + name, peak[0]/3600, 'h')
+        fig.add('t100_' + name, t100, 'h')
+        fig.add('t290_' + name, t290, 'h')
+        fig.add('peakInsulated_' + name, peak0[j], 'C')
 
     # --- TMax depths, both cases
     alt, alt0 = alteration('.'), alteration('insulatedGround')
@@ -136,6 +120,15 @@ def main():
     out.append('Depth reached by TMax at 12 h [cm] (alteration.csv): '
                'with heat loss / insulated ground')
     for a, a0 in zip(alt, alt0):
+        for l in lines:
+            fig.add('depth%s_%s' % (a['threshold_C'], l),
+                    100*float(a['depth_%s_m' % l]), 'cm')
+            fig.add('depth%s_%s_insulated' % (a['threshold_C'], l),
+                    100*float(a0['depth_%s_m' % l]), 'cm')
+        fig.add('volume%s' % a['threshold_C'],
+                1000*float(a['volume360_m3']), 'L')
+        fig.add('volume%s_insulated' % a['threshold_C'],
+                1000*float(a0['volume360_m3']), 'L')
         out.append('  %4s C: ' % a['threshold_C'] + ', '.join(
             '%s %.2f / %.2f' % (l, 100*float(a['depth_%s_m' % l]),
                                 100*float(a0['depth_%s_m' % l]))
@@ -147,6 +140,14 @@ def main():
     for label, case in (('with heat loss', '.'),
                         ('insulated ground', 'insulatedGround')):
         heat, stored, latent, relative = energy_balance(case)
+        sfx = '' if case == '.' else '_insulated'
+        fig.add('heatFire' + sfx, heat['fire']/1e3, 'kJ')
+        fig.add('heatGround' + sfx, -heat['ground']/1e3, 'kJ')
+        fig.add('groundFraction' + sfx, -100*heat['ground']/heat['fire'], '%')
+        fig.add('heatFar' + sfx, heat['side'] + heat['bottom'], 'J')
+        fig.add('stored' + sfx, stored/1e3, 'kJ')
+        fig.add('latent' + sfx, latent/1e3, 'kJ')
+        fig.add('relativeImbalance' + sfx, relative, '1')
         out.append(
             'Energy balance at 12 h, %s (per 5-degree wedge): fire %.4g J, '
             'ground %.4g J (%.1f %% of the fire\'s), far boundaries %.2g J; '
@@ -154,6 +155,16 @@ def main():
             % (label, heat['fire'], heat['ground'],
                -100*heat['ground']/heat['fire'],
                heat['side'] + heat['bottom'], stored, latent, relative))
+    # what the losses change under the centre of the fire
+    f = dict((n, v) for n, v, u in fig.rows)
+    fig.add('lossEffectPeak_TC_axis_3.5cm', f['peakInsulated_TC_axis_3.5cm']
+            - f['peak_TC_axis_3.5cm'], 'K')
+    fig.add('lossEffectDepth100_axis', f['depth100_axis_insulated']
+            - f['depth100_axis'], 'cm')
+    steps, rejected, _, _ = ht.log_stats('log.ahcFoam')
+    fig.add('steps', steps, '1')
+    fig.add('rejected', rejected, '1')
+    fig.write('figures.csv')
     print('\n'.join(out))
 
 

@@ -10,14 +10,19 @@ Reads, for CASE in pendular (pendularFoam) and conduction (ahcFoam),
     CASE/postProcessing/axisProfile/<t>/axis_*.xy     fields down the axis
     CASE/log.*Foam                                    water balance
 and writes sensors_pendular.csv, sensors_conduction.csv (copies),
-sensors_difference.csv (T of pendularFoam - T of ahcFoam, K) and prints the
-summary (results.txt). Standard library only.
+sensors_difference.csv (T of pendularFoam - T of ahcFoam, K) and
+figures.csv (name,value,unit of every result figure README.md states,
+checked by tests/tutorialFlatHearthPendular), and prints the summary
+(results.txt). Standard library and etc/python/hearthTutorial.py only.
 """
 
-import glob
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402
 
 SECTOR = 360.0/5.0      # the 5-degree wedge: x 72 for the whole hearth
 PHI, ALPHA0, RHOL = 0.26, 0.01, 1000.0
@@ -25,47 +30,25 @@ W0 = PHI*ALPHA0*RHOL    # initial liquid water, kg/m3
 
 
 def read_csv(path):
-    with open(path) as f:
-        names = f.readline().strip().split(',')[1:]
-        rows = [[float(x) for x in line.split(',')] for line in f
-                if line.strip()]
-    return names, rows
+    header, rows = ht.read_csv(path)
+    return header[1:], rows
 
 
 def first_time(rows, col, level):
     """First time [s] at which sensor col reaches level [C], interpolated"""
-    prev = None
-    for r in rows:
-        if r[col] >= level:
-            if prev is None or prev[col] >= level:
-                return r[0]
-            f = (level - prev[col])/(r[col] - prev[col])
-            return prev[0] + f*(r[0] - prev[0])
-        prev = r
-    return None
+    return ht.crossing([r[0] for r in rows], [r[col] for r in rows], level)
 
 
 def value_at(rows, col, t):
-    for a, b in zip(rows, rows[1:]):
-        if a[0] <= t <= b[0]:
-            f = (t - a[0])/(b[0] - a[0]) if b[0] > a[0] else 0
-            return a[col] + f*(b[col] - a[col])
-    return rows[-1][col]
+    return ht.interpolate([r[0] for r in rows], [r[col] for r in rows], t)
 
 
 def axis_profile(case):
     """Last write time, {field: [(depth_cm, value)]} down the axis"""
-    dirs = glob.glob(os.path.join(case, 'postProcessing/axisProfile/*'))
-    t = max(dirs, key=lambda d: float(os.path.basename(d)))
-    path = glob.glob(os.path.join(t, 'axis_*.xy'))[0]
-    fields = os.path.basename(path)[5:-3].split('_')
-    prof = {f: [] for f in fields}
-    with open(path) as fh:
-        for line in fh:
-            v = [float(x) for x in line.split()]
-            for f, x in zip(fields, v[1:]):
-                prof[f].append((-100*v[0], x))
-    return float(os.path.basename(t)), prof
+    t = ht.time_dirs(os.path.join(case, 'postProcessing/axisProfile'))[-1]
+    depth, fields = ht.read_axis_set(t)
+    return (float(os.path.basename(t)),
+            dict((f, list(zip(depth, v))) for f, v in fields.items()))
 
 
 def crossing(profile, level, from_above=True):
@@ -78,19 +61,13 @@ def crossing(profile, level, from_above=True):
 
 def water_balance(log):
     """Last water balance of pendularFoam: {patch: kg out}, stored change"""
-    out, stored = {}, None
-    with open(log) as f:
-        text = f.read()
-    blocks = text.split('Water balance at t = ')
-    if len(blocks) < 2:
-        return out, stored
-    last = blocks[-1].split('Air balance')[0]
-    for m in re.finditer(r'out through (\S+) = (\S+)', last):
-        if not m.group(1).startswith('proc'):
-            out[m.group(1)] = float(m.group(2))
-    m = re.search(r'stored change\s+= (\S+)', last)
-    stored = float(m.group(1)) if m else None
-    return out, stored
+    b = ht.pendular_balances(log)
+    if not b:
+        return {}, None
+    w = b[-1]['water']
+    return (dict((k[4:], v) for k, v in w.items()
+                 if k.startswith('out_') and not k[4:].startswith('proc')),
+            w.get('stored'))
 
 
 def fmt_h(t):
@@ -98,6 +75,7 @@ def fmt_h(t):
 
 
 def main():
+    fig = ht.Figures()
     walls = sys.argv[1:4]
     names, pend = read_csv('pendular/postProcessing/thermocouples/0/sensors.csv')
     names_c, cond = read_csv('conduction/postProcessing/thermocouples/0/sensors.csv')
@@ -140,6 +118,12 @@ def main():
             p('%-17s %-10s %10s %10s %10s %7.1f C'
               % (n, model, fmt_h(t95), fmt_h(t105), plateau,
                  value_at(rows, i, tEnd)))
+            fig.add('t95_%s_%s' % (model, n), t95 and t95/60, 'min')
+            fig.add('t105_%s_%s' % (model, n), t105 and t105/60, 'min')
+            fig.add('plateau_%s_%s' % (model, n),
+                    (t105 - t95)/60 if t95 is not None and t105 is not None
+                    else None, 'min')
+            fig.add('Tend_%s_%s' % (model, n), value_at(rows, i, tEnd), 'C')
     p('')
     p('T(pendular) - T(ahc) at each sensor: largest and smallest, when, and'
       ' the pendular T then')
@@ -149,6 +133,20 @@ def main():
         p('  %-17s %+6.2f K at %5.2f h (%5.1f C)   %+6.2f K at %5.2f h'
           ' (%5.1f C)' % (n, hi[0], hi[1]/3600, hi[2], lo[0], lo[1]/3600,
                           lo[2]))
+        fig.add('diffMax_' + n, hi[0], 'K')
+        fig.add('diffMaxTime_' + n, hi[1]/3600, 'h')
+        fig.add('diffMaxT_' + n, hi[2], 'C')
+        fig.add('diffMin_' + n, lo[0], 'K')
+        fig.add('diffMinT_' + n, lo[2], 'C')
+    # the pendular soil cooler than ahcFoam's, on the axis: the range of
+    # the largest deficits and of the temperatures at which they occur
+    lows = [min((r[i] - value_at(cond, i, r[0]), r[i]) for r in pend)
+            for i, n in enumerate(names, start=1) if n.startswith('axis')]
+    if lows:
+        fig.add('coolingAxisSmallest', min(-d for d, _ in lows), 'K')
+        fig.add('coolingAxisLargest', max(-d for d, _ in lows), 'K')
+        fig.add('coolingAxisTLowest', min(T for _, T in lows), 'C')
+        fig.add('coolingAxisTHighest', max(T for _, T in lows), 'C')
     p('')
 
     # Down the axis at the last write time
@@ -159,6 +157,8 @@ def main():
     p('Down the axis at t = %.1f h:' % (tp/3600))
     p('  depth of 100 C: pendular %.2f cm, ahc %.2f cm'
       % (crossing(TpC, 100.0), crossing(TcC, 100.0)))
+    fig.add('depth100_pendular', crossing(TpC, 100.0), 'cm')
+    fig.add('depth100_ahc', crossing(TcC, 100.0), 'cm')
     alpha = prof['alphaL']
     zmax, amax = max(alpha, key=lambda x: x[1])
     dry = crossing(alpha, 0.5*ALPHA0, from_above=False)
@@ -175,6 +175,16 @@ def main():
         if z == zmax:
             T_at = T
     wet = [z for z, a in alpha if a > 1.05*ALPHA0]
+    fig.add('dryDepth_pendular', dry, 'cm')
+    fig.add('dryDepthT_pendular', dry and ht.interpolate(
+        [z for z, _ in TpC], [T for _, T in TpC], dry), 'C')
+    fig.add('dryDepth_ahc', dryc, 'cm')
+    fig.add('alphaLMaxAxis', amax, '1')
+    fig.add('alphaLMaxAxisRatio', amax/ALPHA0, '1')
+    fig.add('alphaLMaxAxisDepth', zmax, 'cm')
+    fig.add('alphaLMaxAxisT', T_at, 'C')
+    fig.add('condensationTop', min(wet) if wet else None, 'cm')
+    fig.add('condensationBottom', max(wet) if wet else None, 'cm')
     p('  condensation ahead of the front: alpha_l up to %.4f (%.2f x the'
       ' initial) at %.2f cm (T = %.1f C);' % (amax, amax/ALPHA0, zmax, T_at))
     if wet:
@@ -190,6 +200,9 @@ def main():
         p('  pendularFoam: lost %.3f kg; out through %s'
           % (-stored*SECTOR, ', '.join('%s %.3f kg' % (k, v*SECTOR)
                                       for k, v in wout.items())))
+        fig.add('waterLost_pendular', -stored*SECTOR, 'kg')
+        for k, v in wout.items():
+            fig.add('waterOut_%s' % k, v*SECTOR, 'kg')
     m = None
     with open('conduction/log.ahcFoam') as f:
         for line in f:
@@ -207,6 +220,10 @@ def main():
         if vol:
             p('  ahcFoam:      evaporated %.3f kg (initial %.3f kg)'
               % ((W0*vol - m)*SECTOR, W0*vol*SECTOR))
+            fig.add('waterLost_ahc', (W0*vol - m)*SECTOR, 'kg')
+            if stored is not None:
+                fig.add('waterLostRatio', -stored/(W0*vol - m), '1')
+            fig.add('waterInitial', W0*vol*SECTOR, 'kg')
     # heat through the fire disc
     for case, log, pat in (
             ('pendularFoam', 'pendular/log.pendularFoam',
@@ -219,6 +236,48 @@ def main():
             q = float(found[-1])*(-1 if case == 'pendularFoam' else 1)
             p('  heat in through the fire disc, %-12s %.2f MJ'
               % (case + ':', q*SECTOR/1e6))
+            fig.add('heatFire_' + case, q*SECTOR/1e6, 'MJ')
+
+    # The axis probes of pendularFoam: condensation wave and drying
+    locs, times, cols = ht.read_probes(
+        'pendular/postProcessing/probes/0/alphaL')
+    p('')
+    p('alpha_l at the probes of pendularFoam: largest (when), dry '
+      '(alpha_l < %.3f) at' % (0.5*ALPHA0))
+    for loc, c in zip(locs, cols):
+        if loc[0] > 0.01:
+            continue            # the axis probes only
+        name = 'axis_%gcm' % round(-100*loc[2], 3)
+        a, ta = ht.peak(times, c)
+        k = c.index(a)
+        tdry = next((t for t, x in zip(times[k:], c[k:])
+                     if x < 0.5*ALPHA0), None)
+        p('  %-10s %.4f at %.2f h, dry at %s' % (
+            name, a, ta/3600, '%.2f h' % (tdry/3600) if tdry else '-'))
+        fig.add('probeAlphaLMax_' + name, a, '1')
+        fig.add('probeAlphaLMaxTime_' + name, ta/3600, 'h')
+        fig.add('probeDry_' + name, tdry and tdry/3600, 'h')
+
+    # Balances and steps of pendularFoam
+    bal = ht.pendular_balances('pendular/log.pendularFoam')
+    steps, rejected, _, _ = ht.log_stats('pendular/log.pendularFoam')
+    p('')
+    p('pendularFoam: %d steps, %d rejected; at the %d write times: largest '
+      'alpha_l %.4g, cells above the pendular range %d; largest relative '
+      'imbalance: energy %.2g, water %.2g, air %.2g'
+      % (steps, rejected, len(bal), max(b['alphaLMax'] for b in bal),
+         max(b['nOutside'] for b in bal),
+         max(abs(b['energy']['relative']) for b in bal),
+         max(abs(b['water']['relative']) for b in bal),
+         max(abs(b['air']['relative']) for b in bal)))
+    fig.add('steps_pendular', steps, '1')
+    fig.add('rejected_pendular', rejected, '1')
+    fig.add('alphaLMaxWrites', max(b['alphaLMax'] for b in bal), '1')
+    fig.add('cellsOutsideRange', max(b['nOutside'] for b in bal), '1')
+    for q in ('energy', 'water', 'air'):
+        fig.add('largestRelativeImbalance_' + q,
+                max(abs(b[q]['relative']) for b in bal), '1')
+    fig.write('figures.csv')
     print('\n'.join(out))
 
 

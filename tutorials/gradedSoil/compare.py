@@ -3,16 +3,19 @@
 quadrupoleTemperature (100 uniform-gamma layers, and 2) at the sensor
 depths, every 5 min: writes comparison.csv (time_h; per depth the ahcFoam
 value linearly interpolated in time, the quadrupole values) and
-results.txt (peaks, times of the peaks, largest differences), and prints
-results.txt. Standard library only."""
+results.txt (peaks, times of the peaks, largest differences) and
+figures.csv (name,value,unit of the figures README.md states, checked by
+tests/tutorialGradedSoil), and prints results.txt. Standard library and
+etc/python/hearthTutorial.py only."""
 import bisect
-import csv
+import os
+import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402
 
-def rows(path):
-    with open(path) as f:
-        lines = [l for l in csv.reader(f) if l and not l[0].startswith('#')]
-    return lines[0], [[float(x) for x in l] for l in lines[1:]]
+rows = ht.read_csv
 
 
 fvHead, fv = rows('postProcessing/thermocouples/0/sensors.csv')
@@ -51,6 +54,7 @@ out = ['Graded soil (water 7 % -> 38 % over 1 m) under the fire record of'
            'max|FV-quad|', 'max|2L-quad|'),
        '%-7s %10s %8s %10s %8s %13s %13s' % ('[cm]', '[C]', '', '[C]', '',
                                              '[K]', '[K]')]
+fig = ht.Figures()
 for j, d in enumerate(depths):
     fvs = [(fv_at(r[0], j), r[0]) for r in q]
     qs = [(r[j + 2], r[0]) for r in q]
@@ -59,6 +63,15 @@ for j, d in enumerate(depths):
     diff2 = max(abs(r2[j + 2] - r[j + 2]) for r, r2 in zip(q, q2))
     out.append('%-7g %10.2f %8.2f %10.2f %8.2f %13.3f %13.3f' % (
         100*d, pf[0], pf[1]/3600, pq[0], pq[1]/3600, diff, diff2))
+    cm = '%gcm' % (100*d)
+    fig.add('peakFV_' + cm, pf[0], 'C')
+    fig.add('peakQuad_' + cm, pq[0], 'C')
+    fig.add('peakTime_' + cm, pq[1]/3600, 'h')
+    fig.add('peakTimeFV_' + cm, pf[1]/3600, 'h')
+    fig.add('maxDiffFVQuad_' + cm, diff, 'K')
+    fig.add('maxDiff2Layers_' + cm, diff2, 'K')
+fig.add('comparisonTimes', len(q), '1')
+fig.write('figures.csv')
 with open('results.txt', 'w') as f:
     f.write('\n'.join(out) + '\n')
 print('\n'.join(out))

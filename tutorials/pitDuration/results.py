@@ -7,31 +7,20 @@
                                                 T [C] (exit 1 if never)
 """
 import csv
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht       # noqa: E402  (etc/python/hearthTutorial.py)
 
 
 def read_sensors(case, name='thermocouples'):
     """Columns of postProcessing/<name>/0/sensors.csv: {header: [values]}"""
-    with open('%s/postProcessing/%s/0/sensors.csv' % (case, name)) as f:
-        rows = list(csv.reader(f))
-    header = rows[0]
-    cols = {h: [] for h in header}
-    for r in rows[1:]:
-        for h, v in zip(header, r):
-            cols[h].append(float(v))
-    return cols
+    return ht.sensors_of(case, name)
 
 
-def crossing(t, T, threshold):
-    """First time [s] at which T reaches threshold (linear between the
-    samples), None if never"""
-    for i in range(1, len(t)):
-        if T[i] >= threshold > T[i - 1]:
-            return t[i - 1] + (threshold - T[i - 1])*(t[i] - t[i - 1]) \
-                / (T[i] - T[i - 1])
-    if T and T[0] >= threshold:
-        return t[0]
-    return None
+crossing = ht.crossing      # first time at which T reaches a threshold
 
 
 if __name__ == '__main__' and len(sys.argv) > 1 and sys.argv[1] == '--cross':
@@ -50,7 +39,6 @@ if __name__ == '__main__' and len(sys.argv) > 1 and sys.argv[1] == '--cross':
 
 import glob
 import math
-import os
 import re
 
 VARIANTS = [
@@ -82,37 +70,6 @@ def erfc_time(depth, T_fire=700, T0=20, threshold=290, alpha=DRY_ALPHA):
     return (depth/(2*x))**2/alpha
 
 
-def log_stats(case):
-    """Steps, rejected steps, ExecutionTime and ClockTime of log.ahcFoam"""
-    steps, rejected, exe, clock = 0, 0, None, None
-    with open(case + '/log.ahcFoam') as f:
-        for line in f:
-            if line.startswith('Time = '):
-                steps += 1
-            m = re.search(r'rejected = (\d+)', line)
-            if m:
-                rejected += int(m.group(1))
-            m = re.match(r'ExecutionTime = ([\d.]+) s\s+ClockTime = ([\d.]+) s',
-                         line)
-            if m:
-                exe, clock = float(m.group(1)), float(m.group(2))
-    return steps, rejected, exe, clock
-
-
-def energy_balance(case):
-    """The last 'Energy balance' block of log.ahcFoam"""
-    with open(case + '/log.ahcFoam') as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines)
-                if l.startswith('Energy balance at t ='))
-    block = [lines[start]]
-    for l in lines[start + 1:]:
-        if not l.strip():
-            break
-        block.append('  ' + l.strip())
-    return block
-
-
 def read_csv(path):
     with open(path) as f:
         return list(csv.DictReader(f))
@@ -137,8 +94,12 @@ def summary():
       'and walls at 700 C from t = 0')
     w('mesh: %s cells (quarter domain, 2 mm at the floor); %s rank(s)'
       % (cells, nProcs))
+    fig = ht.Figures()
+    fig.add('cells', int(cells), '1')
     for case, _ in VARIANTS:
-        steps, rej, exe, clock = log_stats(case)
+        steps, rej, exe, clock = ht.log_stats(case + '/log.ahcFoam')
+        fig.add('steps_%s' % case, steps, '1')
+        fig.add('rejected_%s' % case, rej, '1')
         w('  %-10s ahcFoam 6 h of fire: %4d steps (%d rejected), %s s wall '
           'time (ExecutionTime %.0f s, ClockTime %.0f s)'
           % (case, steps, rej, read_file(case + '/wallTime.ahcFoam', '?'),
@@ -175,6 +136,8 @@ def summary():
             w('  %-42s %4d cm %6s %11s%s'
               % (label if d == 2 else '', d, seed[(case, d)],
                  hours(t290(case, 'floor_%dcm' % d)), extra))
+            if case == 'dry':
+                fig.add('erfc290_%dcm' % d, erfc_time(d/100)/3600, 'h')
     w('')
 
     # Every sensor
@@ -185,10 +148,14 @@ def summary():
           % ('sensor', 'T=100 C [h]', 'T=290 C [h]', 'TMax=290 C [h]',
              'T at 6 h [C]'))
         for name in [h for h in s if h != 'time_s']:
+            t100 = crossing(s['time_s'], s[name], 100)
+            tc290 = crossing(s['time_s'], s[name], 290)
             w('  %-15s %12s %12s %14s %12.1f'
-              % (name, hours(crossing(s['time_s'], s[name], 100)),
-                 hours(crossing(s['time_s'], s[name], 290)),
+              % (name, hours(t100), hours(tc290),
                  hours(crossing(m['time_s'], m[name], 290)), s[name][-1]))
+            fig.add('t100_%s_%s' % (case, name), t100 and t100/3600, 'h')
+            fig.add('t290_%s_%s' % (case, name), tc290 and tc290/3600, 'h')
+            fig.add('T6h_%s_%s' % (case, name), s[name][-1], 'C')
         w('')
 
     # hearthDuration
@@ -218,6 +185,17 @@ def summary():
         w('  %4s %12.4f %16.2f %+10.3f %12.1f'
           % (r['run'], float(r['duration_h']), float(r['TMax_floor_4cm_C']),
              float(r['f_K']), float(r['wallTime_s'])))
+        fig.add('durationRun%s' % r['run'], float(r['duration_h']), 'h')
+        fig.add('TMax4cmRun%s' % r['run'], float(r['TMax_floor_4cm_C']), 'C')
+    fig.add('continuous290_4cm', tc/3600, 'h')
+    fig.add('minimalDuration', d, 'h')
+    fig.add('minimalDurationMinutes', 60*d, 'min')
+    fig.add('bracketLower', float(result['lower_h']), 'h')
+    fig.add('bracketUpper', float(result['upper_h']), 'h')
+    fig.add('durationRuns', float(result['runs']), '1')
+    fig.add('minimalShorterBy', tc/3600 - d, 'h')
+    fig.add('minimalShorterByMinutes', 60*(tc/3600 - d), 'min')
+    fig.add('minimalShorterByPercent', 100*(1 - d*3600/tc), '%')
     w('')
 
     # hearthAlteration
@@ -234,13 +212,32 @@ def summary():
               % (r['threshold_C'], 100*float(r['depth_floorCentre_m']),
                  100*float(r['depth_longWall_m']),
                  100*float(r['depth_shortWall_m']), float(r['volume_m3'])))
+            for line in ('floorCentre', 'longWall', 'shortWall'):
+                fig.add('depth%s_%s_%s' % (r['threshold_C'], case, line),
+                        100*float(r['depth_%s_m' % line]), 'cm')
+            fig.add('volume%s_%s' % (r['threshold_C'], case),
+                    float(r['volume_m3']), 'm3')
     w('')
 
     # Energy balance
     for case, label in VARIANTS:
+        log = case + '/log.ahcFoam'
         w('Last energy balance of %s/log.ahcFoam (quarter domain):' % case)
-        out.extend('  ' + l for l in energy_balance(case))
+        block = ht.energy_balance_blocks(log)[-1]
+        out.extend(['  ' + block[0]] + ['    ' + l for l in block[1:]])
         w('')
+        eb = ht.energy_balance(log)
+        L = ht.latent_heat(case + '/constant/porousProperties')
+        fig.add('heatIn_%s' % case, eb['in']/1e6, 'MJ')
+        fig.add('farFraction_%s' % case, -100*eb['in_far']/eb['in'], '%')
+        fig.add('waterEvaporated_%s' % case,
+                eb['latent']/L if eb['latent'] else 0, 'kg')
+        fig.add('latentFraction_%s' % case, 100*eb['latent']/eb['stored'],
+                '%')
+        fig.add('largestRelativeImbalance_%s' % case,
+                max(abs(ht.energy_balance(log, i)['relative'])
+                    for i in range(len(ht.energy_balance_blocks(log)))), '1')
+    fig.write('figures.csv')
 
     with open('results.txt', 'w') as f:
         f.write('\n'.join(out) + '\n')
