@@ -107,7 +107,8 @@ def erfc_solution(z, t, T0, Tw, alpha):
 class NeumannStefan:
     """Two-phase Neumann solution: semi-infinite solid at T0 < Tf, wall held
     at Tw > Tf, melting front xi = 2 lam sqrt(alpha_l t). The transcendental
-    equation is the corrected form (Muhieddine digest §3.2):
+    equation is the corrected form of Muhieddine 2009 eq. 2.8 (its last term
+    has T_f - T_w where T_w - T_f is meant):
       exp(-lam^2)/erf(lam)
       - ks/kl nu (Tf - T0)/(Tw - Tf) exp(-nu^2 lam^2)/erfc(nu lam)
       = sqrt(pi) lam L/(Cl (Tw - Tf)),  nu = sqrt(alpha_l/alpha_s)."""

@@ -1,7 +1,7 @@
 """pendularFoam (100 cells of 1 mm, backward Euler, adaptive steps) against
 the reference (200 nodes, BDF2, within 4e-4 K of its converged solution) on
 the report's column at 1, 3, 6, 9 and 12 h:
-- temperature at 1, 2 and 5 cm within 0.5 K (the issue's tolerance: the
+- temperature at 1, 2 and 5 cm within 0.5 K (the required tolerance: the
   first-order time error of backward Euler with steps of up to 2 K);
 - drying-front depth (alpha_l = alpha_0/2) within two cells (2 mm), while a
   front exists (1 h; the column is dry from 1.9 h on);

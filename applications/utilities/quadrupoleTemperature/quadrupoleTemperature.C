@@ -8,9 +8,8 @@ Description
     Semi-analytical temperature history of a 1-D soil made of layers of
     uniform gradient factor gamma over a uniform semi-infinite substrate,
     under an imposed surface temperature or surface flux history: the
-    thermal quadrupoles of Krapez & Profice for graded media (seed paper
-    ../shared/seeds/002_ffd04539886d5d4b.txt §2.1, eqs. 1-12; digest
-    ../shared/digests/seed-ewgm-and-quadrupoles.md §4) with the de Hoog,
+    thermal quadrupoles of Krapez & Profice for graded media (§2.1, eqs.
+    1-12; see doc/references.md) with the de Hoog,
     Knight & Stokes (1982) inversion of the Laplace transform. No mesh, no
     OpenFOAM case: OpenFOAM is used only to read the dictionary.
 

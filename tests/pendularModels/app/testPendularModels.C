@@ -6,7 +6,7 @@ Application
 
 Description
     Unit tests of the point-wise models of the pendular evaporation model
-    (EWGM report, Canot 2024, §1; digest seed-ewgm-and-quadrupoles.md §1)
+    (EWGM report, Canot 2024, §1)
     in libhearthFoam, with no mesh or case:
 
     1. surface tension (vargaftik, linear, hsiehKaviany) against the
@@ -995,7 +995,7 @@ void testConductivity()
     // Mansour (2015) §4.1, the published parameters of her synthetic
     // saturated sand: Kunii-Smith with beta = 0.895, Phi = 0.058 (her eq.
     // 4.3), k_s = 0.756, phi = 0.2, k_l = 0.6, vapour 0.025 W/(m K). Liquid-
-    // and vapour-filled k_e = 0.6244 and 0.2016 (digest seed-mansour.md §3.1,
+    // and vapour-filled k_e = 0.6244 and 0.2016 (computed from Mansour 2015 §4.1,
     // to 4 digits: tolerance half a unit of the last digit)
     const scalar kS = 0.756, kL = 0.6, kV = 0.025, phi = 0.2;
     checkAbs("Mansour §4.1: k_e(alpha_l = 1) = 0.6244",
