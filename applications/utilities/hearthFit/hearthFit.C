@@ -6,7 +6,7 @@ Application
 
 Description
     Least-squares estimation of case parameters (soil properties, ...) from
-    thermocouple histories, by running the solver itself (issue 5).
+    thermocouple histories, by running the solver itself.
 
     Reads system/hearthFitDict of the case (annotated example: the file
     hearthFitDict next to this source).  Each parameter names a keyword
@@ -562,7 +562,10 @@ int main(int argc, char *argv[])
     (
         obsDict,
         wordList
-        ({"file", "timeWindow", "sensors", "sigma", "sigmas", "weights"})
+        ({
+            "file", "timeUnit", "timeWindow", "sensors", "sigma", "sigmas",
+            "weights"
+        })
     );
     const fileName obsFile(obsDict.get<fileName>("file").expand());
     const fileName obsPath(obsFile.isAbsolute() ? obsFile : casePath/obsFile);
@@ -575,11 +578,45 @@ int main(int argc, char *argv[])
                 << "observations: " << err.c_str() << exit(FatalIOError);
         }
     }
+    // The file's time unit (s, min or h; default s): the times, and the
+    // timeWindow, converted to the case's seconds at once
+    const word timeUnit(obsDict.getOrDefault<word>("timeUnit", "s"));
+    const HashTable<scalar> secondsPer({{"s", 1}, {"min", 60}, {"h", 3600}});
+    if (!secondsPer.found(timeUnit))
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "timeUnit " << timeUnit << ": valid units are s, min and h"
+            << exit(FatalIOError);
+    }
+    for (double& t : measured.times)
+    {
+        t *= secondsPer[timeUnit];
+    }
+    // Times in minutes or hours read as seconds would all fall in the first
+    // minutes of the run and be fitted there without a word: unless the
+    // unit is given, observations that end within the first 1/60 of the
+    // run stop the fit
+    const scalar simulated =
+        runTime.endTime().value() - runTime.startTime().value();
+    if
+    (
+        !obsDict.found("timeUnit") && !measured.times.empty()
+     && measured.times.back() - runTime.startTime().value() <= simulated/60
+    )
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "the observations in " << obsPath << " end at t = "
+            << measured.times.back() << " s, within the first 1/60 of the "
+            << simulated << " s simulated: are the file's times in minutes"
+            << " or hours? Give timeUnit min or h (or timeUnit s if they"
+            << " are seconds)" << exit(FatalIOError);
+    }
     scalar t0 = -GREAT, t1 = GREAT;
     if (obsDict.found("timeWindow"))
     {
         const Pair<scalar> w(obsDict.get<Pair<scalar>>("timeWindow"));
-        t0 = w.first(); t1 = w.second();
+        t0 = secondsPer[timeUnit]*w.first();
+        t1 = secondsPer[timeUnit]*w.second();
         if (!(t0 < t1))
         {
             FatalIOErrorInFunction(obsDict) << "timeWindow: need start < end"
