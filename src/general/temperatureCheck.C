@@ -6,6 +6,41 @@
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace
+{
+
+//- The first face of a non-coupled patch of T at or below 0 K (or NaN):
+//  true, with its patch and face; false if there is none
+bool firstNonPositiveFace
+(
+    const Foam::volScalarField& T,
+    Foam::label& patchi,
+    Foam::label& facei
+)
+{
+    forAll(T.boundaryField(), pi)
+    {
+        const Foam::fvPatchScalarField& Tp = T.boundaryField()[pi];
+        if (Tp.coupled())
+        {
+            continue;
+        }
+        forAll(Tp, fi)
+        {
+            if (!(Tp[fi] > 0))
+            {
+                patchi = pi;
+                facei = fi;
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+} // End anonymous namespace
+
+
 void Foam::temperatureCheck::initial(const volScalarField& T)
 {
     dictionary fieldDict;
@@ -37,56 +72,38 @@ void Foam::temperatureCheck::initial(const volScalarField& T)
         }
     }
 
-    forAll(T.boundaryField(), patchi)
+    label patchi = -1, facei = -1;
+    if (firstNonPositiveFace(T, patchi, facei))
     {
         const fvPatchScalarField& Tp = T.boundaryField()[patchi];
-        if (Tp.coupled())
-        {
-            continue;
-        }
-        forAll(Tp, facei)
-        {
-            if (!(Tp[facei] > 0))
-            {
-                FatalIOErrorInFunction(fieldDict)
-                    << "Field '" << T.name() << "' on patch '"
-                    << Tp.patch().name() << "' (boundaryField "
-                    << Tp.patch().name() << ", type " << Tp.type()
-                    << ") = " << Tp[facei] << " K at t = "
-                    << T.time().timeName() << " s, face " << facei
-                    << ": outside its valid range (0, inf), at or below"
-                    << " absolute zero, in file " << T.objectPath() << nl
-                    << exit(FatalIOError);
-            }
-        }
+        FatalIOErrorInFunction(fieldDict)
+            << "Field '" << T.name() << "' on patch '"
+            << Tp.patch().name() << "' (boundaryField "
+            << Tp.patch().name() << ", type " << Tp.type()
+            << ") = " << Tp[facei] << " K at t = "
+            << T.time().timeName() << " s, face " << facei
+            << ": outside its valid range (0, inf), at or below"
+            << " absolute zero, in file " << T.objectPath() << nl
+            << exit(FatalIOError);
     }
 }
 
 
 void Foam::temperatureCheck::boundary(const volScalarField& T)
 {
-    forAll(T.boundaryField(), patchi)
+    label patchi = -1, facei = -1;
+    if (firstNonPositiveFace(T, patchi, facei))
     {
         const fvPatchScalarField& Tp = T.boundaryField()[patchi];
-        if (Tp.coupled())
-        {
-            continue;
-        }
-        forAll(Tp, facei)
-        {
-            if (!(Tp[facei] > 0))
-            {
-                FatalErrorInFunction
-                    << "Temperature on patch '" << Tp.patch().name()
-                    << "' (boundaryField " << Tp.patch().name() << " of "
-                    << T.name() << ", type " << Tp.type() << ") = " << Tp[facei] << " K at t = "
-                    << T.time().timeName() << " s, face " << facei
-                    << ": at or below absolute zero (valid range (0, inf)"
-                    << " K). Check the temperature history of patch '"
-                    << Tp.patch().name() << "' (a table going below 0 K?)"
-                    << nl << exit(FatalError);
-            }
-        }
+        FatalErrorInFunction
+            << "Temperature on patch '" << Tp.patch().name()
+            << "' (boundaryField " << Tp.patch().name() << " of "
+            << T.name() << ", type " << Tp.type() << ") = " << Tp[facei]
+            << " K at t = " << T.time().timeName() << " s, face " << facei
+            << ": at or below absolute zero (valid range (0, inf)"
+            << " K). Check the temperature history of patch '"
+            << Tp.patch().name() << "' (a table going below 0 K?)"
+            << nl << exit(FatalError);
     }
 }
 

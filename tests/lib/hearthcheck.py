@@ -18,25 +18,11 @@ import sys
 COST_MARGIN = 0.3
 REJECTED_SLACK = 2
 
-def read_probes(path):
-    """OpenFOAM probes file -> (locations, times, columns[probe][time])."""
-    locations, times, cols = [], [], None
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#'):
-                m = re.match(r'#\s*Probe\s+\d+\s+\(([^)]*)\)', line)
-                if m:
-                    locations.append(tuple(float(v) for v in m.group(1).split()))
-                continue
-            vals = line.split()
-            if not vals:
-                continue
-            times.append(float(vals[0]))
-            if cols is None:
-                cols = [[] for _ in vals[1:]]
-            for i, v in enumerate(vals[1:]):
-                cols[i].append(float(v))
-    return locations, times, cols or []
+# The tutorials' reader of probes files (etc/python/hearthTutorial.py: one
+# reader for the tests and the tutorials)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+from hearthTutorial import read_probes  # noqa: E402
 
 
 def read_energy_balances(log):
