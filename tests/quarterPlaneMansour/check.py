@@ -23,7 +23,11 @@ near T0 and the scheme's start-up dominates):
   at 20 C is a super-solution (the 2-D problem has a colder top beyond
   12.5 cm and a colder bottom), so T(0, y, t) <= T_Neumann(|y|, t), up to the
   discretisation error of the 1-D problem on these cells (0.5 K at 2 mm,
-  tests/quarterPlaneMelting)."""
+  tests/quarterPlaneMelting).
+
+With the latent heat 5 % low (320 kJ/kg) 3 checks fail (max |T - T_inf|
+0.60 K at 2 cm and 0.50 K at 4 cm, RMS 0.26 K at 4 cm): the tolerances,
+set by the 100 x 100 mesh's own error, let through less than that."""
 import bisect
 import math
 import os

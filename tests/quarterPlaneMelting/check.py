@@ -25,11 +25,17 @@ The edge against Neumann then gets the measured total error times 1.25.
 
 The corner departs: the 2-D solution is above both 1-D solutions T1(x)
 and T1(y) (each a sub-solution in the quarter plane), checked on the whole
-field at 50 h up to the discretisation error; at (5 cm, 5 cm) it is 7.8 K
+field at 50 h up to the discretisation error (0.66 K: the 1-D run's largest
+error on the profile, 0.525 K, times 1.25); at (5 cm, 5 cm) it is 7.8 K
 above the 1-D value (the 2-D effect of the seed's fig. 3.11) and the front
 on the diagonal is at x = y = 12.5 cm, against 9.04 cm for the 1-D front.
 The mesh is symmetric about x = y: the probes at (1 m, 5 cm) and
-(5 cm, 1 m) agree to the solver tolerance."""
+(5 cm, 1 m) agree to the solver tolerance.
+
+The test discriminates through the front: with the latent heat 5 % low
+(320 kJ/kg), the temperature errors fall (0.17 K RMS at 5 cm: the scheme's
+lag and the missing latent heat cancel) but the front is 3.7 mm (1-D) and
+4.5 mm (edge) ahead, its passage at 5 cm 1.3 h early: 4 checks fail."""
 import bisect
 import math
 import hearthcheck as hc
@@ -113,7 +119,7 @@ c.le('edge, 50 h: |front - exact| [mm]', front2, 3.1)
 # ---- the corner: above both 1-D solutions, well above near the corner
 below = max(max(ex.T(xx, tEnd), ex.T(yy, tEnd)) - TT
             for xx, yy, TT in zip(x, y, T))
-c.le('field at 50 h: max of max(T1(x), T1(y)) - T [K]', below, 1.25*pmax1)
+c.le('field at 50 h: max of max(T1(x), T1(y)) - T [K]', below, 0.66)
 T55 = corner[-1]
 c.true('corner (5 cm, 5 cm) at 50 h: 2-D effect above 5 K',
        T55 - ex.T(0.05, tEnd) > 5.0,
