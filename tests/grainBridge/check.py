@@ -65,10 +65,14 @@ c.le('bridge r0 = 0.3: contact angle 30 deg (rad)', abs(b.theta - theta),
      1e-9)
 
 # ---- hysteresis length, Mansour Tab. 2.1 ---------------------------------
+figures = []
 for e, tab in ((0.1, 0.013434), (0.05, 0.002027)):
     W = gb.void_volume(e)
     aTouch = gb.drop_cap(0.0, theta, e)[1]/W
     aMin = gs.contacting_range(theta, e)[1]/W
+    figures += [('alphaTouch_eps%g' % e, aTouch),
+                ('alphaMinBridge_eps%g' % e, aMin),
+                ('hysteresisLength_eps%g' % e, aTouch - aMin)]
     print('     eps %g: drops touch at alpha_l %.6g, smallest stable bridge'
           ' %.6g: length %.6g (Tab. 2.1: %g)' % (e, aTouch, aMin,
                                                  aTouch - aMin, tab))
@@ -111,4 +115,8 @@ c.le('bridge alpha_l 0.12 k_e at n = 50 as in the study, %g (rel)'
 print('     dry %.6g, alpha_l 0.12 %.6g W/(m K): ratio %.4g (extrapolated'
       ' %.4g; Mansour Fig. 2.10: "about 5")'
       % (kDry, kWet, kWet/kDry, KWET_EXT/KDRY_EXT))
+with open('figures.csv', 'w') as f:
+    f.write('name,value,unit\n')
+    for name, v in figures:
+        f.write('%s,%.10g,-\n' % (name, v))
 c.done()
