@@ -28,6 +28,20 @@ rb = gs.bisect(lambda r: gb.bridge(r, theta, eps).volume/W, r0Min, 0.9,
                0.12)
 bridge = gb.bridge(rb, theta, eps)
 
+# The switching points of the hysteresis (Mansour Fig. 2.11, Tab. 2.1):
+# filling, the drops touch (alpha_touch) and a bridge of that volume forms;
+# drying, the smallest stable bridge (r0Min) breaks into drops
+aTouch = gb.drop_cap(0.0, theta, eps)[1]/W
+rTouch = gs.bisect(lambda r: gb.bridge(r, theta, eps).volume/W, r0Min, 0.9,
+                   aTouch)
+aMin = gb.bridge(r0Min, theta, eps).volume/W
+zMin = gs.bisect(lambda z: gb.drop_cap(z, theta, eps)[1]/W, 0.0,
+                 eps*(1 - 1e-9), aMin)
+pairs = {
+    'touch': (gb.bridge(rTouch, theta, eps), gb.drop(0.0, theta, eps)),
+    'minBridge': (gb.bridge(r0Min, theta, eps), gb.drop(zMin, theta, eps)),
+}
+
 k = {}
 for n in (50, 100, 200):
     cell = gs.Cell(gs.parse(['-n', str(n), '-case', 'cell%d' % n]))
@@ -35,6 +49,11 @@ for n in (50, 100, 200):
     k[('wet', n)] = cell.k_e(bridge)
     print('     n %3d: dry %.7g, alpha_l 0.12 %.7g W/(m K), ratio %.5g'
           % (n, k[('dry', n)], k[('wet', n)], k[('wet', n)]/k[('dry', n)]))
+    # Mansour's flux (Tab. 2.1 "flux jump"): R0 = 1, dT = 1, the mean flux
+    # density over the top, q = k_e dT/L = k_e/(1 + eps)
+    for name, (pc, pn) in pairs.items():
+        k[(name, n)] = (cell.k_e(pc) - cell.k_e(pn))/(1.0 + eps)
+        print('     n %3d: flux jump at %s %.6g' % (n, name, k[(name, n)]))
 
 figures = []
 for s in ('dry', 'wet'):
@@ -49,6 +68,16 @@ for s in ('dry', 'wet'):
     figures += [('k_%s_n50' % s, k[(s, 50)]), ('k_%s_n100' % s, k[(s, 100)]),
                 ('k_%s_n200' % s, k[(s, 200)]), ('order_%s' % s, p),
                 ('k_%s_extrapolated' % s, ext)]
+for name in pairs:
+    figures += [('jump_%s_n%d' % (name, n), k[(name, n)])
+                for n in (50, 100, 200)]
+# Tab. 2.1 (eps 0.1, theta 30): flux jump 0.0881 (the larger, filling)
+TAB_JUMP = 0.0881
+tol = abs(k[('touch', 200)] - k[('touch', 100)]) + 0.02*TAB_JUMP
+c.le('flux jump filling at n = 200 vs Tab. 2.1 %g (abs; mesh diff n100-200'
+     ' + 2 %%)' % TAB_JUMP, abs(k[('touch', 200)] - TAB_JUMP), tol)
+c.true('jump larger filling than drying (Mansour Fig. 2.11)',
+       k[('touch', 200)] > k[('minBridge', 200)] > 0)
 figures += [('ratio_n200', k[('wet', 200)]/k[('dry', 200)]),
             ('ratio_extrapolated', k[('wet', 'ext')]/k[('dry', 'ext')])]
 with open('figures.csv', 'w') as f:
