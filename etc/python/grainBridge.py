@@ -281,9 +281,11 @@ def toroidal(r0, theta, eps, n=4000):
                     b = m
                 else:
                     a, ga = m, gm
-            pts, beta, vb = meet(0.5*(a + b))
+            rho = 0.5*(a + b)
+            pts, beta, vb = meet(rho)
             r, z = zip(*pts)
             p = Profile(r, z, beta, float('nan'), eps, "contacting")
+            p.rho = rho
             p.volume = vb - cap_volume(z[-1] - eps)
             return p
         prev = (rho, v) if v is not None else None
