@@ -60,7 +60,13 @@ int main(int argc, char *argv[])
             IOobject::AUTO_WRITE),
         mesh
     );
-    T.dimensions().reset(dimTemperature);   // checked on reading below
+    if (T.dimensions() != dimTemperature)
+    {
+        FatalErrorInFunction
+            << "Field T (" << T.objectPath() << ") has dimensions "
+            << T.dimensions() << ": expected a temperature "
+            << dimTemperature << nl << exit(FatalError);
+    }
 
     Info<< "Reading field kappa" << endl;
     volScalarField kappa
