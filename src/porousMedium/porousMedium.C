@@ -62,12 +62,15 @@ Foam::scalar Foam::porousMedium::kappaCell
         waterContent_[celli]
        *(1.0 - phaseChange_->evaporatedFraction(T, TMax));
 
-    const scalar kappaFluid =
-        phi > SMALL
-      ? (thetaL*liquid_.kappa() + (phi - thetaL)*vapour_.kappa())/phi
-      : vapour_.kappa();
+    // Liquid fraction of the pores, alpha_l = theta_l/phi: the pore fluid
+    // is alpha_l k_l + (1 - alpha_l) k_v (kappaPartiallySaturated), or
+    // the table k_e(alpha_l) of conductivityModel tabulated
+    const scalar alphaL = phi > SMALL ? thetaL/phi : 0;
 
-    return conductivityModel_->kappa(kappaSolid_[celli], kappaFluid, phi);
+    return conductivityModel_->kappaPartiallySaturated
+    (
+        kappaSolid_[celli], liquid_.kappa(), vapour_.kappa(), alphaL, phi
+    );
 }
 
 
