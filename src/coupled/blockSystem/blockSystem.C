@@ -6,7 +6,17 @@
 #include "petscSession.H"
 #include "syncTools.H"
 #include "checkedRead.H"
+#include <petscksp.h>
 #include <sstream>
+#include <type_traits>
+
+static_assert
+(
+    std::is_same<PetscInt, Foam::label>::value
+ && std::is_same<PetscScalar, Foam::scalar>::value,
+    "PETSc's PetscInt and PetscScalar must be OpenFOAM's label and scalar"
+    " (Debian's petsc-dev real: 32-bit indices, double; OpenFOAM Int32 DP)"
+);
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -398,10 +408,10 @@ void Foam::blockSystem::checkBlock
 void Foam::blockSystem::addBlocks
 (
     const label nRows,
-    const PetscInt* rows,
+    const label* rows,
     const label nCols,
-    const PetscInt* cols,
-    const PetscScalar* values
+    const label* cols,
+    const scalar* values
 )
 {
     petscSession::check
@@ -470,7 +480,7 @@ void Foam::blockSystem::clear()
 void Foam::blockSystem::addDiag(const label celli, const scalarSquareMatrix& D)
 {
     checkBlock(D, "addDiag");
-    const PetscInt row = offset_ + celli;
+    const label row = offset_ + celli;
     addBlocks(1, &row, 1, &row, D.cdata());
 }
 
@@ -489,7 +499,7 @@ void Foam::blockSystem::addFace
     checkBlock(neiOwn, "addFace");
     checkBlock(neiNei, "addFace");
 
-    const PetscInt idx[2] =
+    const label idx[2] =
     {
         offset_ + mesh_.faceOwner()[facei],
         offset_ + mesh_.faceNeighbour()[facei]
@@ -539,14 +549,14 @@ void Foam::blockSystem::addBoundaryFaceFlux
 )
 {
     checkBlock(dFdOwn, "addBoundaryFaceFlux");
-    const PetscInt row = offset_ + mesh_.faceOwner()[facei];
+    const label row = offset_ + mesh_.faceOwner()[facei];
     addBlocks(1, &row, 1, &row, dFdOwn.cdata());
 
     const label nbr = nbrGlobalCell(facei);
     if (nbr >= 0)
     {
         checkBlock(dFdNbr, "addBoundaryFaceFlux");
-        const PetscInt col = nbr;
+        const label col = nbr;
         addBlocks(1, &row, 1, &col, dFdNbr.cdata());
     }
 }

@@ -33,10 +33,18 @@ Foam::petscSession::petscSession()
     check(PetscInitialized(&already), "PetscInitialized");
     if (!already)
     {
-        // The communicator of the run: all ranks in parallel, this one
-        // alone otherwise (a serial application started by mpirun must not
-        // couple with the others)
-        PETSC_COMM_WORLD = Pstream::parRun() ? MPI_COMM_WORLD : PETSC_COMM_SELF;
+        // The communicator of the run: all ranks in parallel; this rank
+        // alone in a serial run (a serial application started by mpirun
+        // must not couple with the others). PETSc accepts a communicator
+        // only once MPI runs; without MPI (a serial run) it starts MPI
+        // itself on a world of one rank
+        int mpiRunning = 0;
+        MPI_Initialized(&mpiRunning);
+        if (mpiRunning)
+        {
+            PETSC_COMM_WORLD =
+                Pstream::parRun() ? MPI_COMM_WORLD : PETSC_COMM_SELF;
+        }
         check
         (
             PetscInitializeNoArguments(),
