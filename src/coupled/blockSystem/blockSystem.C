@@ -537,7 +537,32 @@ void Foam::blockSystem::addFaceFlux
     const scalarSquareMatrix& dFdNei
 )
 {
-    addFace(facei, dFdOwn, dFdNei, -dFdOwn, -dFdNei);
+    checkBlock(dFdOwn, "addFaceFlux");
+    checkBlock(dFdNei, "addFaceFlux");
+
+    const label idx[2] =
+    {
+        offset_ + mesh_.faceOwner()[facei],
+        offset_ + mesh_.faceNeighbour()[facei]
+    };
+
+    // Rows: owner (+F), neighbour (-F); columns: owner, neighbour. One
+    // row-major (2B) x (2B) array, no temporary matrix
+    const label B = nBlock_;
+    for (label bi = 0; bi < 2; ++bi)
+    {
+        const scalar sign = bi == 0 ? 1 : -1;
+        for (label r = 0; r < B; ++r)
+        {
+            scalar* row = &faceValues_[(bi*B + r)*2*B];
+            for (label c = 0; c < B; ++c)
+            {
+                row[c] = sign*dFdOwn(r, c);
+                row[B + c] = sign*dFdNei(r, c);
+            }
+        }
+    }
+    addBlocks(2, idx, 2, idx, faceValues_.cdata());
 }
 
 

@@ -33,7 +33,8 @@ Description
     Writes blockU0..2 (1.) and newtonU0..2 (3.) for the serial = parallel
     comparison of the test script. Options: -diverge (the linear solve
     with fvSolution 'coupledDiverge': must end in a FatalError naming the
-    reason).
+    reason); -newtonCost (Newton alone, the wall time of its assembly and
+    linear solves per iteration and cell: bench/coupledBlock).
 
 \*---------------------------------------------------------------------------*/
 
@@ -42,6 +43,7 @@ Description
 #include "blockSystem.H"
 #include "diffusionTestProblem.H"
 #include "unitChecks.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -222,6 +224,16 @@ void jacobianCheck(const fvMesh& mesh, const diffusionTestProblem& problem)
 }
 
 
+//- Wall time of Newton's parts, summed over the iterations
+struct newtonCost
+{
+    scalar assembly = 0;    // Jacobian and residual [s]
+    scalar solve = 0;       // linear solve [s]
+    label nSolves = 0;
+    label kspIterations = 0;
+};
+
+
 //- 3. Newton; with a frozen Jacobian if frozen. Returns the residual norms
 DynamicList<scalar> newton
 (
@@ -229,14 +241,17 @@ DynamicList<scalar> newton
     const diffusionTestProblem& problem,
     scalarField& x,
     const bool frozen,
-    const label maxIter
+    const label maxIter,
+    newtonCost& cost
 )
 {
     blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupledNewton"));
     DynamicList<scalar> r;
     scalarField R;
+    clockTime clock;
     for (label iter = 0; iter <= maxIter; ++iter)
     {
+        clock.timeIncrement();
         if (iter == 0 || !frozen)
         {
             R = problem.jacobian(x, sys);
@@ -247,6 +262,7 @@ DynamicList<scalar> newton
             sys.source() = -R;
         }
         r.append(gNorm(R));
+        cost.assembly += clock.timeIncrement();
         Info<< (frozen ? "frozen" : "Newton") << " iteration " << iter
             << ": |R| = " << r.last();
         if (iter > 0)
@@ -260,8 +276,11 @@ DynamicList<scalar> newton
             break;
         }
         scalarField dx(x.size(), Zero);
-        sys.solve(dx);
+        const solverPerformance perf = sys.solve(dx);
         x += dx;
+        cost.solve += clock.timeIncrement();
+        ++cost.nSolves;
+        cost.kspIterations += perf.nIterations();
     }
     return r;
 }
@@ -286,7 +305,8 @@ void newtonChecks(const fvMesh& mesh, const diffusionTestProblem& problem)
 {
     section("3. Newton on the nonlinear problem from u = 1");
     scalarField x(3*mesh.nCells(), 1.0);
-    const DynamicList<scalar> r = newton(mesh, problem, x, false, 12);
+    newtonCost cost;
+    const DynamicList<scalar> r = newton(mesh, problem, x, false, 12, cost);
     const scalar floor = 1e-10*r.first();
     checkTrue
     (
@@ -299,12 +319,41 @@ void newtonChecks(const fvMesh& mesh, const diffusionTestProblem& problem)
     writeFields(mesh, "newtonU", x);
 
     scalarField xf(3*mesh.nCells(), 1.0);
-    const DynamicList<scalar> rf = newton(mesh, problem, xf, true, 12);
+    const DynamicList<scalar> rf = newton(mesh, problem, xf, true, 12, cost);
     const scalar pf = lastOrder(rf, floor);
     checkTrue
     (
         "frozen Jacobian: order of convergence below 1.3",
         pf < 1.3, pf, 1.3, "<"
+    );
+}
+
+
+//- Newton alone, timed (bench/coupledBlock): the cost per iteration and
+//  cell of the Jacobian assembly and of the linear solve
+void newtonCostOnly(const fvMesh& mesh, const diffusionTestProblem& problem)
+{
+    section("Newton alone, timed");
+    scalarField x(3*mesh.nCells(), 1.0);
+    newtonCost cost;
+    const DynamicList<scalar> r = newton(mesh, problem, x, false, 20, cost);
+    const scalar nCells = returnReduce(mesh.nCells(), sumOp<label>());
+    const label n = max(cost.nSolves, 1);
+    Info<< "newtonCost: cells " << nCells
+        << ", ranks " << Pstream::nProcs()
+        << ", Newton iterations " << cost.nSolves
+        << ", |R|/|R_0| " << r.last()/r.first()
+        << ", KSP iterations per solve " << scalar(cost.kspIterations)/n
+        << nl
+        << "newtonCost: per iteration: assembly " << cost.assembly/n
+        << " s, solve " << cost.solve/n << " s, total "
+        << (cost.assembly + cost.solve)/n << " s, "
+        << 1e6*(cost.assembly + cost.solve)/n/nCells << " us per cell"
+        << endl;
+    checkTrue
+    (
+        "Newton converged to |R| < 1e-10 |R_0|",
+        r.last() < 1e-10*r.first(), r.last()/r.first(), 1e-10, "<"
     );
 }
 
@@ -315,6 +364,11 @@ void newtonChecks(const fvMesh& mesh, const diffusionTestProblem& problem)
 
 int main(int argc, char *argv[])
 {
+    argList::addBoolOption
+    (
+        "newtonCost",
+        "only Newton on the nonlinear problem, timed (bench/coupledBlock)"
+    );
     argList::addBoolOption
     (
         "diverge",
@@ -353,6 +407,10 @@ int main(int argc, char *argv[])
             scalarField x(3*mesh.nCells(), Zero);
             sys.solve(x);
             Info<< "coupledDiverge: the solver converged" << endl;
+        }
+        else if (args.found("newtonCost"))
+        {
+            newtonCostOnly(mesh, diffusionTestProblem(mesh, props));
         }
         else
         {
