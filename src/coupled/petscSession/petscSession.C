@@ -7,12 +7,41 @@
 #include "error.H"
 
 #include <petscsys.h>
+#include <string>
 
 // * * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * //
 
 namespace
 {
     bool sessionAlive = false;
+
+    //- PETSc's message of the last error, with where it was raised
+    std::string lastPetscError;
+
+    //- PETSc's error handler: keep the message for petscSession::check
+    //  (PETSc's default handler prints a trace and its whole configuration
+    //  on every rank), return the error code
+    PetscErrorCode keepMessage
+    (
+        MPI_Comm,
+        int line,
+        const char* func,
+        const char* file,
+        PetscErrorCode n,
+        PetscErrorType p,
+        const char* mess,
+        void*
+    )
+    {
+        if (p == PETSC_ERROR_INITIAL)
+        {
+            lastPetscError =
+                std::string(mess ? mess : "")
+              + " (in " + (func ? func : "?") + ", " + (file ? file : "?")
+              + ":" + std::to_string(line) + ")";
+        }
+        return n;
+    }
 }
 
 
@@ -52,6 +81,11 @@ Foam::petscSession::petscSession()
         );
         initialised_ = true;
     }
+    check
+    (
+        PetscPushErrorHandler(keepMessage, nullptr),
+        "PetscPushErrorHandler"
+    );
     sessionAlive = true;
 }
 
@@ -61,6 +95,7 @@ Foam::petscSession::petscSession()
 Foam::petscSession::~petscSession()
 {
     sessionAlive = false;
+    PetscPopErrorHandler();
     if (initialised_)
     {
         PetscFinalize();
@@ -96,7 +131,8 @@ void Foam::petscSession::check(const int ierr, const char* call)
         PetscErrorMessage(PetscErrorCode(ierr), &text, nullptr);
         FatalErrorInFunction
             << "PETSc call " << call << " failed with error " << ierr
-            << ": " << (text ? text : "(no message)")
+            << ": " << (text ? text : "(no message)") << nl
+            << "    " << lastPetscError.c_str()
             << exit(FatalError);
     }
 }
