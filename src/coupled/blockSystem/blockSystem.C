@@ -5,6 +5,8 @@
 #include "blockSystem.H"
 #include "petscSession.H"
 #include "syncTools.H"
+#include "processorPolyPatch.H"
+#include "cyclicPolyPatch.H"
 #include "checkedRead.H"
 #include <petscksp.h>
 #include <sstream>
@@ -122,6 +124,21 @@ void Foam::blockSystem::setNeighbourCells()
     nbrGlobalCell_.setSize(bndGlobal.size(), -1);
     for (const polyPatch& pp : mesh_.boundaryMesh())
     {
+        // Face-to-face couplings only: a face of an AMI patch couples to
+        // several faces, which the exchange above does not give
+        if
+        (
+            pp.coupled()
+         && !isA<processorPolyPatch>(pp)
+         && !isA<cyclicPolyPatch>(pp)
+        )
+        {
+            FatalErrorInFunction
+                << "Patch " << pp.name() << " of type " << pp.type()
+                << ": the block system couples cells across processor and"
+                << " cyclic patches only (one face to one face)"
+                << exit(FatalError);
+        }
         if (pp.coupled())
         {
             forAll(pp, i)

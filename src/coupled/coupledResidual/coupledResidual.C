@@ -4,6 +4,7 @@
 
 #include "coupledResidual.H"
 #include "syncTools.H"
+#include "emptyPolyPatch.H"
 
 #include <limits>
 
@@ -128,6 +129,11 @@ void Foam::coupledResidual::evaluate
     const scalarField& xNbr = txNbr();
     for (const polyPatch& pp : mesh_.boundaryMesh())
     {
+        if (isA<emptyPolyPatch>(pp))
+        {
+            // The faces of a 2-D or 1-D mesh's empty patches carry no flux
+            continue;
+        }
         forAll(pp, i)
         {
             const label facei = pp.start() + i;

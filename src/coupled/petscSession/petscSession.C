@@ -74,6 +74,13 @@ Foam::petscSession::petscSession()
             PETSC_COMM_WORLD =
                 Pstream::parRun() ? MPI_COMM_WORLD : PETSC_COMM_SELF;
         }
+        // OpenFOAM's signal handlers stay (its stack trace on SIGSEGV,
+        // its floating-point traps): PETSc installs none
+        check
+        (
+            PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr),
+            "PetscOptionsSetValue"
+        );
         check
         (
             PetscInitializeNoArguments(),
