@@ -8,15 +8,28 @@
 
 #include <limits>
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::coupledResidual::differenceScheme>
+Foam::coupledResidual::differenceSchemeNames
+({
+    { differenceScheme::central, "central" },
+    { differenceScheme::forward, "forward" },
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::coupledResidual::step(const scalar xj, const label j) const
 {
-    // eps^(1/3): the step that balances truncation and round-off errors of
-    // central differences
-    static const scalar cbrtEps =
-        Foam::cbrt(std::numeric_limits<scalar>::epsilon());
-    const scalar h = cbrtEps*max(mag(xj), xScale_[j]);
+    // The steps that balance truncation and round-off errors: eps^(1/3)
+    // for central differences, eps^(1/2) for forward ones
+    static const scalar eps = std::numeric_limits<scalar>::epsilon();
+    static const scalar hCentral = Foam::cbrt(eps);
+    static const scalar hForward = Foam::sqrt(eps);
+    const scalar h =
+        (scheme_ == differenceScheme::central ? hCentral : hForward)
+       *max(mag(xj), xScale_[j]);
     // A step that is exactly representable around xj
     volatile scalar xp = xj + h;
     return xp - xj;
@@ -27,24 +40,30 @@ template<class LocalFunction>
 void Foam::coupledResidual::localJacobian
 (
     const LocalFunction& G,
+    const scalar* G0,
     scalar* y,
     scalarSquareMatrix& dGdy
 ) const
 {
     const label B = nBlock_;
     scalar Gp[64], Gm[64];
+    const bool central = scheme_ == differenceScheme::central;
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
         const scalar h = step(yj, j);
         y[j] = yj + h;
         G(y, Gp);
-        y[j] = yj - h;
-        G(y, Gm);
+        if (central)
+        {
+            y[j] = yj - h;
+            G(y, Gm);
+        }
         y[j] = yj;
         for (label i = 0; i < B; ++i)
         {
-            dGdy(i, j) = (Gp[i] - Gm[i])/(2*h);
+            dGdy(i, j) =
+                central ? (Gp[i] - Gm[i])/(2*h) : (Gp[i] - G0[i])/h;
         }
     }
 }
@@ -87,6 +106,7 @@ void Foam::coupledResidual::evaluate
             localJacobian
             (
                 [&](const scalar* y, scalar* G) { cellTerm(celli, y, G); },
+                F,
                 xo,
                 dOwn
             );
@@ -111,12 +131,14 @@ void Foam::coupledResidual::evaluate
             localJacobian
             (
                 [&](const scalar* y, scalar* G) { faceFlux(facei, y, xn, G); },
+                F,
                 xo,
                 dOwn
             );
             localJacobian
             (
                 [&](const scalar* y, scalar* G) { faceFlux(facei, xo, y, G); },
+                F,
                 xn,
                 dNei
             );
@@ -165,6 +187,7 @@ void Foam::coupledResidual::evaluate
                     {
                         faceFlux(facei, y, xn, G);
                     },
+                    F,
                     xo,
                     dOwn
                 );
@@ -174,6 +197,7 @@ void Foam::coupledResidual::evaluate
                     {
                         faceFlux(facei, xo, y, G);
                     },
+                    F,
                     xn,
                     dNei
                 );
@@ -186,6 +210,7 @@ void Foam::coupledResidual::evaluate
                     {
                         boundaryFlux(facei, y, G);
                     },
+                    F,
                     xo,
                     dOwn
                 );
@@ -208,12 +233,14 @@ Foam::coupledResidual::coupledResidual
 (
     const polyMesh& mesh,
     const label nBlock,
-    const scalarField& xScale
+    const scalarField& xScale,
+    const differenceScheme scheme
 )
 :
     mesh_(mesh),
     nBlock_(nBlock),
-    xScale_(xScale)
+    xScale_(xScale),
+    scheme_(scheme)
 {
     if (nBlock < 1 || nBlock > 64 || xScale.size() != nBlock || min(xScale) <= 0)
     {
