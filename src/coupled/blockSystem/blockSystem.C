@@ -502,51 +502,6 @@ void Foam::blockSystem::addDiag(const label celli, const scalarSquareMatrix& D)
 }
 
 
-void Foam::blockSystem::addFace
-(
-    const label facei,
-    const scalarSquareMatrix& ownOwn,
-    const scalarSquareMatrix& ownNei,
-    const scalarSquareMatrix& neiOwn,
-    const scalarSquareMatrix& neiNei
-)
-{
-    checkBlock(ownOwn, "addFace");
-    checkBlock(ownNei, "addFace");
-    checkBlock(neiOwn, "addFace");
-    checkBlock(neiNei, "addFace");
-
-    const label idx[2] =
-    {
-        offset_ + mesh_.faceOwner()[facei],
-        offset_ + mesh_.faceNeighbour()[facei]
-    };
-
-    // The 2 x 2 blocks as one row-major (2B) x (2B) array
-    const label B = nBlock_;
-    const scalarSquareMatrix* blocks[2][2] =
-    {
-        { &ownOwn, &ownNei },
-        { &neiOwn, &neiNei }
-    };
-    for (label bi = 0; bi < 2; ++bi)
-    {
-        for (label r = 0; r < B; ++r)
-        {
-            for (label bj = 0; bj < 2; ++bj)
-            {
-                const scalarSquareMatrix& m = *blocks[bi][bj];
-                for (label c = 0; c < B; ++c)
-                {
-                    faceValues_[(bi*B + r)*2*B + bj*B + c] = m(r, c);
-                }
-            }
-        }
-    }
-    addBlocks(2, idx, 2, idx, faceValues_.cdata());
-}
-
-
 void Foam::blockSystem::addFaceFlux
 (
     const label facei,

@@ -44,6 +44,7 @@ Description
 #include "diffusionTestProblem.H"
 #include "unitChecks.H"
 #include "clockTime.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -227,8 +228,10 @@ void jacobianCheck(const fvMesh& mesh, const diffusionTestProblem& problem)
 //- Wall time of Newton's parts, summed over the iterations
 struct newtonCost
 {
-    scalar assembly = 0;    // Jacobian and residual [s]
-    scalar solve = 0;       // linear solve [s]
+    scalar assembly = 0;    // Jacobian and residual, wall time [s]
+    scalar solve = 0;       // linear solve, wall time [s]
+    scalar assemblyCpu = 0; // the same, CPU time of this process [s]
+    scalar solveCpu = 0;
     label nSolves = 0;
     label kspIterations = 0;
 };
@@ -249,9 +252,11 @@ DynamicList<scalar> newton
     DynamicList<scalar> r;
     scalarField R;
     clockTime clock;
+    cpuTime cpu;
     for (label iter = 0; iter <= maxIter; ++iter)
     {
         clock.timeIncrement();
+        cpu.cpuTimeIncrement();
         if (iter == 0 || !frozen)
         {
             R = problem.jacobian(x, sys);
@@ -263,6 +268,7 @@ DynamicList<scalar> newton
         }
         r.append(gNorm(R));
         cost.assembly += clock.timeIncrement();
+        cost.assemblyCpu += cpu.cpuTimeIncrement();
         Info<< (frozen ? "frozen" : "Newton") << " iteration " << iter
             << ": |R| = " << r.last();
         if (iter > 0)
@@ -279,6 +285,7 @@ DynamicList<scalar> newton
         const solverPerformance perf = sys.solve(dx);
         x += dx;
         cost.solve += clock.timeIncrement();
+        cost.solveCpu += cpu.cpuTimeIncrement();
         ++cost.nSolves;
         cost.kspIterations += perf.nIterations();
     }
@@ -349,6 +356,10 @@ void newtonCostOnly(const fvMesh& mesh, const diffusionTestProblem& problem)
         << " s, solve " << cost.solve/n << " s, total "
         << (cost.assembly + cost.solve)/n << " s, "
         << 1e6*(cost.assembly + cost.solve)/n/nCells << " us per cell"
+        << nl
+        << "newtonCost: per iteration, CPU of the master: assembly "
+        << cost.assemblyCpu/n << " s, solve " << cost.solveCpu/n
+        << " s, total " << (cost.assemblyCpu + cost.solveCpu)/n << " s"
         << endl;
     checkTrue
     (
