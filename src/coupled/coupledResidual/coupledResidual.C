@@ -242,7 +242,11 @@ Foam::coupledResidual::coupledResidual
     xScale_(xScale),
     scheme_(scheme)
 {
-    if (nBlock < 1 || nBlock > 64 || xScale.size() != nBlock || min(xScale) <= 0)
+    if
+    (
+        nBlock < 1 || nBlock > 64
+     || xScale.size() != nBlock || min(xScale) <= 0
+    )
     {
         FatalErrorInFunction
             << "nBlock = " << nBlock << " (1 to 64) with xScale " << xScale
