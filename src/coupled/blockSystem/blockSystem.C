@@ -102,6 +102,39 @@ bool isOptionName(const std::string& s)
     return s.size() > 1 && s[0] == '-' && std::isalpha(s[1]);
 }
 
+
+// The options of the keyword petscOptions ("-name [value] ..."), under the
+// prefix, unless already set
+void setUserOptions(const Foam::dictionary& dict, const std::string& prefix)
+{
+    const Foam::string extra =
+        dict.getOrDefault<Foam::string>("petscOptions", "");
+    std::istringstream is(extra);
+    Foam::List<std::string> tokens;
+    std::string t;
+    while (is >> t)
+    {
+        tokens.append(t);
+    }
+    for (Foam::label i = 0; i < tokens.size(); ++i)
+    {
+        const std::string& name = tokens[i];
+        if (!isOptionName(name))
+        {
+            FatalIOErrorInFunction(dict)
+                << "petscOptions: '" << name.c_str()
+                << "' is neither an option (-name) nor the value after"
+                << " one" << Foam::exit(Foam::FatalIOError);
+        }
+        std::string value;
+        if (i + 1 < tokens.size() && !isOptionName(tokens[i + 1]))
+        {
+            value = tokens[++i];
+        }
+        setDefaultOption(prefix, name.substr(1), value);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -307,33 +340,7 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
     const std::string& prefix = prefix_;
 
     // The user's PETSc options first (they win over the keywords)
-    const string extra = dict.getOrDefault<string>("petscOptions", "");
-    {
-        std::istringstream is(extra);
-        List<std::string> tokens;
-        std::string t;
-        while (is >> t)
-        {
-            tokens.append(t);
-        }
-        for (label i = 0; i < tokens.size(); ++i)
-        {
-            const std::string& name = tokens[i];
-            if (!isOptionName(name))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "petscOptions: '" << name.c_str()
-                    << "' is neither an option (-name) nor the value after"
-                    << " one" << exit(FatalIOError);
-            }
-            std::string value;
-            if (i + 1 < tokens.size() && !isOptionName(tokens[i + 1]))
-            {
-                value = tokens[++i];
-            }
-            setDefaultOption(prefix, name.substr(1), value);
-        }
-    }
+    setUserOptions(dict, prefix);
 
     setDefaultOption(prefix, "ksp_type", solverTypeNames[solver]);
     setDefaultOption(prefix, "ksp_gmres_restart", std::to_string(restart));
