@@ -1,0 +1,724 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "blockSystem.H"
+#include "petscSession.H"
+#include "syncTools.H"
+#include "processorPolyPatch.H"
+#include "cyclicPolyPatch.H"
+#include "checkedRead.H"
+#include <petscksp.h>
+#include <sstream>
+#include <type_traits>
+
+static_assert
+(
+    std::is_same<PetscInt, Foam::label>::value
+ && std::is_same<PetscScalar, Foam::scalar>::value,
+    "PETSc's PetscInt and PetscScalar must be OpenFOAM's label and scalar"
+    " (Debian's petsc-dev real: 32-bit indices, double; OpenFOAM Int32 DP)"
+);
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(blockSystem, 0);
+}
+
+const Foam::Enum<Foam::blockSystem::matrixType>
+Foam::blockSystem::matrixTypeNames
+({
+    { matrixType::baij, "baij" },
+    { matrixType::aij, "aij" },
+});
+
+const Foam::Enum<Foam::blockSystem::solverType>
+Foam::blockSystem::solverTypeNames
+({
+    { solverType::gmres, "gmres" },
+    { solverType::fgmres, "fgmres" },
+    { solverType::bcgs, "bcgs" },
+});
+
+const Foam::Enum<Foam::blockSystem::preconditionerType>
+Foam::blockSystem::preconditionerTypeNames
+({
+    { preconditionerType::bjacobi, "bjacobi" },
+    { preconditionerType::asm_, "asm" },
+    { preconditionerType::fieldsplit, "fieldsplit" },
+    { preconditionerType::lu, "lu" },
+    { preconditionerType::none, "none" },
+});
+
+const Foam::Enum<Foam::blockSystem::subPreconditionerType>
+Foam::blockSystem::subPreconditionerTypeNames
+({
+    { subPreconditionerType::ilu, "ilu" },
+    { subPreconditionerType::lu, "lu" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Set the PETSc option -<prefix><name> unless it is already set (from
+// PETSC_OPTIONS, which so takes precedence)
+void setDefaultOption
+(
+    const std::string& prefix,
+    const std::string& name,
+    const std::string& value
+)
+{
+    const std::string full("-" + prefix + name);
+    PetscBool set = PETSC_FALSE;
+    Foam::petscSession::check
+    (
+        PetscOptionsHasName(nullptr, nullptr, full.c_str(), &set),
+        "PetscOptionsHasName"
+    );
+    if (!set)
+    {
+        Foam::petscSession::check
+        (
+            PetscOptionsSetValue
+            (
+                nullptr,
+                full.c_str(),
+                value.empty() ? nullptr : value.c_str()
+            ),
+            "PetscOptionsSetValue"
+        );
+    }
+}
+
+// An option name: '-' followed by a letter (-1e-3 is a value)
+bool isOptionName(const std::string& s)
+{
+    return s.size() > 1 && s[0] == '-' && std::isalpha(s[1]);
+}
+
+
+// The options of the keyword petscOptions ("-name [value] ..."), under the
+// prefix, unless already set
+void setUserOptions(const Foam::dictionary& dict, const std::string& prefix)
+{
+    const Foam::string extra =
+        dict.getOrDefault<Foam::string>("petscOptions", "");
+    std::istringstream is(extra);
+    Foam::List<std::string> tokens;
+    std::string t;
+    while (is >> t)
+    {
+        tokens.append(t);
+    }
+    for (Foam::label i = 0; i < tokens.size(); ++i)
+    {
+        const std::string& name = tokens[i];
+        if (!isOptionName(name))
+        {
+            FatalIOErrorInFunction(dict)
+                << "petscOptions: '" << name.c_str()
+                << "' is neither an option (-name) nor the value after"
+                << " one" << Foam::exit(Foam::FatalIOError);
+        }
+        std::string value;
+        if (i + 1 < tokens.size() && !isOptionName(tokens[i + 1]))
+        {
+            value = tokens[++i];
+        }
+        setDefaultOption(prefix, name.substr(1), value);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::blockSystem::setNeighbourCells()
+{
+    const label nInternal = mesh_.nInternalFaces();
+    const labelList& own = mesh_.faceOwner();
+
+    // Global index of every cell next to the boundary, swapped across the
+    // coupled patches
+    labelList bndGlobal(mesh_.nFaces() - nInternal);
+    forAll(bndGlobal, bFacei)
+    {
+        bndGlobal[bFacei] = offset_ + own[nInternal + bFacei];
+    }
+    syncTools::swapBoundaryFaceList(mesh_, bndGlobal);
+
+    nbrGlobalCell_.setSize(bndGlobal.size(), -1);
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        // Face-to-face couplings only: a face of an AMI patch couples to
+        // several faces, which the exchange above does not give
+        if
+        (
+            pp.coupled()
+         && !isA<processorPolyPatch>(pp)
+         && !isA<cyclicPolyPatch>(pp)
+        )
+        {
+            FatalErrorInFunction
+                << "Patch " << pp.name() << " of type " << pp.type()
+                << ": the block system couples cells across processor and"
+                << " cyclic patches only (one face to one face)"
+                << exit(FatalError);
+        }
+        if (pp.coupled())
+        {
+            forAll(pp, i)
+            {
+                const label bFacei = pp.start() + i - nInternal;
+                nbrGlobalCell_[bFacei] = bndGlobal[bFacei];
+            }
+        }
+    }
+}
+
+
+void Foam::blockSystem::createMatrix(const matrixType type)
+{
+    const label nCells = mesh_.nCells();
+    const label nInternal = mesh_.nInternalFaces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+
+    // Block non-zeros per block row: on this rank (d), on others (o)
+    List<PetscInt> dnnz(nCells, 1);
+    List<PetscInt> onnz(nCells, 0);
+    for (label facei = 0; facei < nInternal; ++facei)
+    {
+        ++dnnz[own[facei]];
+        ++dnnz[nei[facei]];
+    }
+    forAll(nbrGlobalCell_, bFacei)
+    {
+        const label nbr = nbrGlobalCell_[bFacei];
+        if (nbr >= 0)
+        {
+            const label celli = own[nInternal + bFacei];
+            if (globalCells_.isLocal(nbr))
+            {
+                ++dnnz[celli];
+            }
+            else
+            {
+                ++onnz[celli];
+            }
+        }
+    }
+
+    const PetscInt n = PetscInt(nBlock_*nCells);
+    petscSession::check(MatCreate(PETSC_COMM_WORLD, &A_), "MatCreate");
+    petscSession::check
+    (
+        MatSetSizes(A_, n, n, PETSC_DETERMINE, PETSC_DETERMINE),
+        "MatSetSizes"
+    );
+    const bool parallel = Pstream::parRun();
+    petscSession::check
+    (
+        MatSetType
+        (
+            A_,
+            type == matrixType::baij
+          ? (parallel ? MATMPIBAIJ : MATSEQBAIJ)
+          : (parallel ? MATMPIAIJ : MATSEQAIJ)
+        ),
+        "MatSetType"
+    );
+    petscSession::check(MatSetBlockSize(A_, nBlock_), "MatSetBlockSize");
+    petscSession::check
+    (
+        MatXAIJSetPreallocation
+        (
+            A_, nBlock_, dnnz.cdata(), onnz.cdata(), nullptr, nullptr
+        ),
+        "MatXAIJSetPreallocation"
+    );
+    // A missing pattern entry is a bug of the preallocation: an error
+    petscSession::check
+    (
+        MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
+        "MatSetOption"
+    );
+    // Every rank sets its own rows only
+    petscSession::check
+    (
+        MatSetOption(A_, MAT_NO_OFF_PROC_ENTRIES, PETSC_TRUE),
+        "MatSetOption"
+    );
+
+    petscSession::check(MatCreateVecs(A_, &x_, &b_), "MatCreateVecs");
+}
+
+
+void Foam::blockSystem::createSolver(const dictionary& dict)
+{
+    checkedRead::checkKeywords
+    (
+        dict,
+        {
+            "matrix", "solver", "preconditioner", "subPreconditioner",
+            "iluLevels", "asmOverlap", "tolerance", "relTol", "maxIter",
+            "gmresRestart", "petscOptions"
+        },
+        "block solver settings (blockSystem)"
+    );
+
+    const solverType solver =
+        solverTypeNames.getOrDefault("solver", dict, solverType::gmres);
+    const preconditionerType pc =
+        preconditionerTypeNames.getOrDefault
+        (
+            "preconditioner", dict, preconditionerType::bjacobi
+        );
+    const subPreconditionerType subPc =
+        subPreconditionerTypeNames.getOrDefault
+        (
+            "subPreconditioner", dict, subPreconditionerType::ilu
+        );
+    const label iluLevels = dict.getOrDefault<label>("iluLevels", 0);
+    checkedRead::check
+    (
+        dict, "iluLevels", iluLevels, checkedRead::closed(0, 10)
+    );
+    const label asmOverlap = dict.getOrDefault<label>("asmOverlap", 1);
+    checkedRead::check
+    (
+        dict, "asmOverlap", asmOverlap, checkedRead::closed(0, 10)
+    );
+    const scalar tolerance = dict.getOrDefault<scalar>("tolerance", 1e-12);
+    checkedRead::check
+    (
+        dict, "tolerance", tolerance, checkedRead::nonNegative()
+    );
+    const scalar relTol = dict.getOrDefault<scalar>("relTol", 1e-10);
+    checkedRead::check
+    (
+        dict, "relTol", relTol, checkedRead::closedOpen(0, 1)
+    );
+    if (tolerance <= 0 && relTol <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "tolerance and relTol are both 0: the block solver would"
+            << " never stop; give tolerance > 0 or relTol in (0, 1)"
+            << exit(FatalIOError);
+    }
+    const label maxIter = dict.getOrDefault<label>("maxIter", 1000);
+    checkedRead::check
+    (
+        dict, "maxIter", maxIter, checkedRead::closed(1, labelMax)
+    );
+    const label restart = dict.getOrDefault<label>("gmresRestart", 50);
+    checkedRead::check
+    (
+        dict, "gmresRestart", restart, checkedRead::closed(1, 10000)
+    );
+    const matrixType mType =
+        matrixTypeNames.getOrDefault("matrix", dict, matrixType::baij);
+    if (pc == preconditionerType::fieldsplit && mType == matrixType::baij)
+    {
+        FatalIOErrorInFunction(dict)
+            << "preconditioner fieldsplit needs 'matrix aij;' (PETSc"
+            << " extracts the fields of aij matrices only); matrix is baij"
+            << exit(FatalIOError);
+    }
+
+    createMatrix(mType);
+
+    // Options under the prefix <dictionary name>_
+    prefix_ = dict.dictName() + "_";
+    const std::string& prefix = prefix_;
+
+    // The user's PETSc options first (they win over the keywords)
+    setUserOptions(dict, prefix);
+
+    setDefaultOption(prefix, "ksp_type", solverTypeNames[solver]);
+    setDefaultOption(prefix, "ksp_gmres_restart", std::to_string(restart));
+    setDefaultOption(prefix, "ksp_pc_side", "right");
+    setDefaultOption(prefix, "ksp_norm_type", "unpreconditioned");
+    setDefaultOption(prefix, "ksp_initial_guess_nonzero", "true");
+
+    const std::string sub(subPreconditionerTypeNames[subPc]);
+    switch (pc)
+    {
+        case preconditionerType::bjacobi:
+            setDefaultOption(prefix, "pc_type", "bjacobi");
+            setDefaultOption(prefix, "sub_pc_type", sub);
+            setDefaultOption
+            (
+                prefix, "sub_pc_factor_levels", std::to_string(iluLevels)
+            );
+            break;
+        case preconditionerType::asm_:
+            setDefaultOption(prefix, "pc_type", "asm");
+            setDefaultOption
+            (
+                prefix, "pc_asm_overlap", std::to_string(asmOverlap)
+            );
+            setDefaultOption(prefix, "sub_pc_type", sub);
+            setDefaultOption
+            (
+                prefix, "sub_pc_factor_levels", std::to_string(iluLevels)
+            );
+            break;
+        case preconditionerType::fieldsplit:
+            setDefaultOption(prefix, "pc_type", "fieldsplit");
+            setDefaultOption(prefix, "pc_fieldsplit_type", "multiplicative");
+            break;
+        case preconditionerType::lu:
+            setDefaultOption(prefix, "pc_type", "lu");
+            if (Pstream::parRun())
+            {
+                setDefaultOption
+                (
+                    prefix, "pc_factor_mat_solver_type", "mumps"
+                );
+            }
+            break;
+        case preconditionerType::none:
+            setDefaultOption(prefix, "pc_type", "none");
+            break;
+    }
+
+    petscSession::check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
+    petscSession::check
+    (
+        KSPSetOptionsPrefix(ksp_, prefix.c_str()),
+        "KSPSetOptionsPrefix"
+    );
+    petscSession::check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+    petscSession::check
+    (
+        KSPSetTolerances(ksp_, relTol, tolerance, PETSC_DEFAULT, maxIter),
+        "KSPSetTolerances"
+    );
+    petscSession::check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+
+    KSPType kspType;
+    PC pcObj;
+    PCType pcType;
+    petscSession::check(KSPGetType(ksp_, &kspType), "KSPGetType");
+    petscSession::check(KSPGetPC(ksp_, &pcObj), "KSPGetPC");
+    petscSession::check(PCGetType(pcObj, &pcType), "PCGetType");
+    solverName_ = word(std::string("PETSc-") + kspType + "-" + pcType);
+}
+
+
+void Foam::blockSystem::checkBlock
+(
+    const scalarSquareMatrix& m,
+    const char* what
+) const
+{
+    if (m.n() != nBlock_)
+    {
+        FatalErrorInFunction
+            << what << ": a block of size " << m.n() << " for a system of "
+            << nBlock_ << " unknowns per cell" << abort(FatalError);
+    }
+}
+
+
+void Foam::blockSystem::addBlocks
+(
+    const label nRows,
+    const label* rows,
+    const label nCols,
+    const label* cols,
+    const scalar* values
+)
+{
+    petscSession::check
+    (
+        MatSetValuesBlocked(A_, nRows, rows, nCols, cols, values, ADD_VALUES),
+        "MatSetValuesBlocked"
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::blockSystem::blockSystem
+(
+    const polyMesh& mesh,
+    const label nBlock,
+    const dictionary& dict
+)
+:
+    mesh_(mesh),
+    nBlock_(nBlock),
+    globalCells_(mesh.nCells()),
+    offset_(globalCells_.offset(Pstream::myProcNo())),
+    nbrGlobalCell_(),
+    source_(nBlock*mesh.nCells(), Zero),
+    A_(nullptr),
+    b_(nullptr),
+    x_(nullptr),
+    ksp_(nullptr),
+    solverName_(),
+    prefix_(),
+    faceValues_(4*nBlock*nBlock)
+{
+    petscSession::checkActive("blockSystem");
+    if (nBlock < 1)
+    {
+        FatalErrorInFunction
+            << "nBlock = " << nBlock << ": at least 1 unknown per cell"
+            << exit(FatalError);
+    }
+    setNeighbourCells();
+    createSolver(dict);
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::blockSystem::~blockSystem()
+{
+    if (ksp_) KSPDestroy(&ksp_);
+    if (x_) VecDestroy(&x_);
+    if (b_) VecDestroy(&b_);
+    if (A_) MatDestroy(&A_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::blockSystem::clear()
+{
+    petscSession::check(MatZeroEntries(A_), "MatZeroEntries");
+    source_ = Zero;
+}
+
+
+void Foam::blockSystem::addDiag(const label celli, const scalarSquareMatrix& D)
+{
+    checkBlock(D, "addDiag");
+    const label row = offset_ + celli;
+    addBlocks(1, &row, 1, &row, D.cdata());
+}
+
+
+void Foam::blockSystem::addFaceFlux
+(
+    const label facei,
+    const scalarSquareMatrix& dFdOwn,
+    const scalarSquareMatrix& dFdNei
+)
+{
+    checkBlock(dFdOwn, "addFaceFlux");
+    checkBlock(dFdNei, "addFaceFlux");
+
+    const label idx[2] =
+    {
+        offset_ + mesh_.faceOwner()[facei],
+        offset_ + mesh_.faceNeighbour()[facei]
+    };
+
+    // Rows: owner (+F), neighbour (-F); columns: owner, neighbour. One
+    // row-major (2B) x (2B) array, no temporary matrix
+    const label B = nBlock_;
+    for (label bi = 0; bi < 2; ++bi)
+    {
+        const scalar sign = bi == 0 ? 1 : -1;
+        for (label r = 0; r < B; ++r)
+        {
+            scalar* row = &faceValues_[(bi*B + r)*2*B];
+            for (label c = 0; c < B; ++c)
+            {
+                row[c] = sign*dFdOwn(r, c);
+                row[B + c] = sign*dFdNei(r, c);
+            }
+        }
+    }
+    addBlocks(2, idx, 2, idx, faceValues_.cdata());
+}
+
+
+void Foam::blockSystem::addBoundaryFaceFlux
+(
+    const label facei,
+    const scalarSquareMatrix& dFdOwn,
+    const scalarSquareMatrix& dFdNbr
+)
+{
+    checkBlock(dFdOwn, "addBoundaryFaceFlux");
+    const label row = offset_ + mesh_.faceOwner()[facei];
+    addBlocks(1, &row, 1, &row, dFdOwn.cdata());
+
+    const label nbr = nbrGlobalCell(facei);
+    if (nbr >= 0)
+    {
+        checkBlock(dFdNbr, "addBoundaryFaceFlux");
+        const label col = nbr;
+        addBlocks(1, &row, 1, &col, dFdNbr.cdata());
+    }
+}
+
+
+void Foam::blockSystem::assemble()
+{
+    petscSession::check
+    (
+        MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY),
+        "MatAssemblyBegin"
+    );
+    petscSession::check
+    (
+        MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY),
+        "MatAssemblyEnd"
+    );
+}
+
+
+void Foam::blockSystem::multiply(const scalarField& x, scalarField& y) const
+{
+    if (x.size() != source_.size())
+    {
+        FatalErrorInFunction
+            << "x has " << x.size() << " values, the system "
+            << source_.size() << abort(FatalError);
+    }
+    PetscScalar* p;
+    petscSession::check(VecGetArray(x_, &p), "VecGetArray");
+    std::copy(x.cbegin(), x.cend(), p);
+    petscSession::check(VecRestoreArray(x_, &p), "VecRestoreArray");
+
+    petscSession::check(MatMult(A_, x_, b_), "MatMult");
+
+    y.setSize(source_.size());
+    const PetscScalar* q;
+    petscSession::check(VecGetArrayRead(b_, &q), "VecGetArrayRead");
+    std::copy(q, q + y.size(), y.begin());
+    petscSession::check(VecRestoreArrayRead(b_, &q), "VecRestoreArrayRead");
+}
+
+
+Foam::solverPerformance Foam::blockSystem::solve
+(
+    scalarField& x,
+    const bool failOnDivergence
+) const
+{
+    if (x.size() != source_.size())
+    {
+        FatalErrorInFunction
+            << "x has " << x.size() << " values, the system "
+            << source_.size() << abort(FatalError);
+    }
+
+    // Initial residual |b - A x0|
+    scalarField r;
+    multiply(x, r);
+    r = source_ - r;
+    const scalar initialResidual = Foam::sqrt(gSumSqr(r));
+
+    PetscScalar* p;
+    petscSession::check(VecGetArray(b_, &p), "VecGetArray");
+    std::copy(source_.cbegin(), source_.cend(), p);
+    petscSession::check(VecRestoreArray(b_, &p), "VecRestoreArray");
+    petscSession::check(VecGetArray(x_, &p), "VecGetArray");
+    std::copy(x.cbegin(), x.cend(), p);
+    petscSession::check(VecRestoreArray(x_, &p), "VecRestoreArray");
+
+    petscSession::check(KSPSolve(ksp_, b_, x_), "KSPSolve");
+
+    KSPConvergedReason reason;
+    PetscInt nIter;
+    PetscReal finalResidual;
+    petscSession::check
+    (
+        KSPGetConvergedReason(ksp_, &reason),
+        "KSPGetConvergedReason"
+    );
+    petscSession::check(KSPGetIterationNumber(ksp_, &nIter), "KSPGetIt");
+    petscSession::check
+    (
+        KSPGetResidualNorm(ksp_, &finalResidual),
+        "KSPGetResidualNorm"
+    );
+
+    const PetscScalar* q;
+    petscSession::check(VecGetArrayRead(x_, &q), "VecGetArrayRead");
+    std::copy(q, q + x.size(), x.begin());
+    petscSession::check(VecRestoreArrayRead(x_, &q), "VecRestoreArrayRead");
+
+    const bool converged = reason > 0;
+    if (!converged && failOnDivergence)
+    {
+        const char* reasonText = nullptr;
+        KSPGetConvergedReasonString(ksp_, &reasonText);
+        PetscReal rtol, abstol, dtol;
+        PetscInt maxits;
+        KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &maxits);
+        FatalErrorInFunction
+            << "The block solver " << solverName_ << " (" << nBlock_
+            << " unknowns per cell, " << globalCells_.size() << " cells)"
+            << " did not converge: " << (reasonText ? reasonText : "?")
+            << " (KSPConvergedReason " << int(reason) << ") after "
+            << nIter << " iterations; residual " << initialResidual
+            << " -> " << finalResidual << ", asked tolerance " << abstol
+            << ", relTol " << rtol << ", maxIter " << maxits << nl
+            << "    Look at the preconditioner (e.g. 'preconditioner asm;',"
+            << " 'iluLevels 1;', 'preconditioner lu;') or maxIter in the"
+            << " settings; PETSC_OPTIONS=\"-" << prefix_.c_str()
+            << "ksp_monitor_true_residual\" shows the iterations"
+            << exit(FatalError);
+    }
+
+    return solverPerformance
+    (
+        solverName_,
+        "block",
+        initialResidual,
+        finalResidual,
+        label(nIter),
+        converged,
+        false
+    );
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::blockSystem::component
+(
+    const scalarField& x,
+    const label nBlock,
+    const label k
+)
+{
+    auto tres = tmp<scalarField>::New(x.size()/nBlock);
+    scalarField& res = tres.ref();
+    forAll(res, i)
+    {
+        res[i] = x[nBlock*i + k];
+    }
+    return tres;
+}
+
+
+void Foam::blockSystem::setComponent
+(
+    scalarField& x,
+    const label nBlock,
+    const label k,
+    const scalarField& xk
+)
+{
+    forAll(xk, i)
+    {
+        x[nBlock*i + k] = xk[i];
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "coupledResidual.H"
+#include "syncTools.H"
+#include "emptyPolyPatch.H"
+
+#include <limits>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::coupledResidual::differenceScheme>
+Foam::coupledResidual::differenceSchemeNames
+({
+    { differenceScheme::central, "central" },
+    { differenceScheme::forward, "forward" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::coupledResidual::step(const scalar xj, const label j) const
+{
+    // The steps that balance truncation and round-off errors: eps^(1/3)
+    // for central differences, eps^(1/2) for forward ones
+    static const scalar eps = std::numeric_limits<scalar>::epsilon();
+    static const scalar hCentral = Foam::cbrt(eps);
+    static const scalar hForward = Foam::sqrt(eps);
+    const scalar h =
+        (scheme_ == differenceScheme::central ? hCentral : hForward)
+       *max(mag(xj), xScale_[j]);
+    // A step that is exactly representable around xj
+    volatile scalar xp = xj + h;
+    return xp - xj;
+}
+
+
+template<class LocalFunction>
+void Foam::coupledResidual::localJacobian
+(
+    const LocalFunction& G,
+    const scalar* G0,
+    scalar* y,
+    scalarSquareMatrix& dGdy
+) const
+{
+    const label B = nBlock_;
+    scalar Gp[64], Gm[64];
+    const bool central = scheme_ == differenceScheme::central;
+    for (label j = 0; j < B; ++j)
+    {
+        const scalar yj = y[j];
+        const scalar h = step(yj, j);
+        y[j] = yj + h;
+        G(y, Gp);
+        if (central)
+        {
+            y[j] = yj - h;
+            G(y, Gm);
+        }
+        y[j] = yj;
+        for (label i = 0; i < B; ++i)
+        {
+            dGdy(i, j) =
+                central ? (Gp[i] - Gm[i])/(2*h) : (Gp[i] - G0[i])/h;
+        }
+    }
+}
+
+
+void Foam::coupledResidual::evaluate
+(
+    const scalarField& x,
+    scalarField& R,
+    blockSystem* system
+) const
+{
+    const label B = nBlock_;
+    const label nInternal = mesh_.nInternalFaces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+
+    R.setSize(x.size());
+    R = Zero;
+
+    if (system)
+    {
+        system->clear();
+    }
+
+    scalarSquareMatrix dOwn(B), dNei(B);
+    scalar F[64], xo[64], xn[64];
+
+    // Cell terms
+    for (label celli = 0; celli < mesh_.nCells(); ++celli)
+    {
+        std::copy(&x[B*celli], &x[B*celli] + B, xo);
+        cellTerm(celli, xo, F);
+        for (label k = 0; k < B; ++k)
+        {
+            R[B*celli + k] += F[k];
+        }
+        if (system)
+        {
+            localJacobian
+            (
+                [&](const scalar* y, scalar* G) { cellTerm(celli, y, G); },
+                F,
+                xo,
+                dOwn
+            );
+            system->addDiag(celli, dOwn);
+        }
+    }
+
+    // Internal faces
+    for (label facei = 0; facei < nInternal; ++facei)
+    {
+        const label o = own[facei], n = nei[facei];
+        std::copy(&x[B*o], &x[B*o] + B, xo);
+        std::copy(&x[B*n], &x[B*n] + B, xn);
+        faceFlux(facei, xo, xn, F);
+        for (label k = 0; k < B; ++k)
+        {
+            R[B*o + k] += F[k];
+            R[B*n + k] -= F[k];
+        }
+        if (system)
+        {
+            localJacobian
+            (
+                [&](const scalar* y, scalar* G) { faceFlux(facei, y, xn, G); },
+                F,
+                xo,
+                dOwn
+            );
+            localJacobian
+            (
+                [&](const scalar* y, scalar* G) { faceFlux(facei, xo, y, G); },
+                F,
+                xn,
+                dNei
+            );
+            system->addFaceFlux(facei, dOwn, dNei);
+        }
+    }
+
+    // Boundary faces: across coupled patches with the exchanged states
+    const tmp<scalarField> txNbr = neighbourStates(x);
+    const scalarField& xNbr = txNbr();
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (isA<emptyPolyPatch>(pp))
+        {
+            // The faces of a 2-D or 1-D mesh's empty patches carry no flux
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            const label bFacei = facei - nInternal;
+            const label o = own[facei];
+            std::copy(&x[B*o], &x[B*o] + B, xo);
+            if (pp.coupled())
+            {
+                std::copy(&xNbr[B*bFacei], &xNbr[B*bFacei] + B, xn);
+                faceFlux(facei, xo, xn, F);
+            }
+            else
+            {
+                boundaryFlux(facei, xo, F);
+            }
+            for (label k = 0; k < B; ++k)
+            {
+                R[B*o + k] += F[k];
+            }
+            if (!system)
+            {
+                continue;
+            }
+            if (pp.coupled())
+            {
+                localJacobian
+                (
+                    [&](const scalar* y, scalar* G)
+                    {
+                        faceFlux(facei, y, xn, G);
+                    },
+                    F,
+                    xo,
+                    dOwn
+                );
+                localJacobian
+                (
+                    [&](const scalar* y, scalar* G)
+                    {
+                        faceFlux(facei, xo, y, G);
+                    },
+                    F,
+                    xn,
+                    dNei
+                );
+            }
+            else
+            {
+                localJacobian
+                (
+                    [&](const scalar* y, scalar* G)
+                    {
+                        boundaryFlux(facei, y, G);
+                    },
+                    F,
+                    xo,
+                    dOwn
+                );
+            }
+            system->addBoundaryFaceFlux(facei, dOwn, dNei);
+        }
+    }
+
+    if (system)
+    {
+        system->assemble();
+        system->source() = -R;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::coupledResidual::coupledResidual
+(
+    const polyMesh& mesh,
+    const label nBlock,
+    const scalarField& xScale,
+    const differenceScheme scheme
+)
+:
+    mesh_(mesh),
+    nBlock_(nBlock),
+    xScale_(xScale),
+    scheme_(scheme)
+{
+    if
+    (
+        nBlock < 1 || nBlock > 64
+     || xScale.size() != nBlock || min(xScale) <= 0
+    )
+    {
+        FatalErrorInFunction
+            << "nBlock = " << nBlock << " (1 to 64) with xScale " << xScale
+            << ": one typical magnitude > 0 per unknown"
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField> Foam::coupledResidual::neighbourStates
+(
+    const scalarField& x
+) const
+{
+    const label B = nBlock_;
+    const label nInternal = mesh_.nInternalFaces();
+    const label nBoundary = mesh_.nFaces() - nInternal;
+    const labelList& own = mesh_.faceOwner();
+
+    auto txNbr = tmp<scalarField>::New(B*nBoundary, Zero);
+    scalarField& xNbr = txNbr.ref();
+    scalarField xk(nBoundary);
+    for (label k = 0; k < B; ++k)
+    {
+        forAll(xk, bFacei)
+        {
+            xk[bFacei] = x[B*own[nInternal + bFacei] + k];
+        }
+        syncTools::swapBoundaryFaceList(mesh_, xk);
+        forAll(xk, bFacei)
+        {
+            xNbr[B*bFacei + k] = xk[bFacei];
+        }
+    }
+    return txNbr;
+}
+
+
+void Foam::coupledResidual::residual
+(
+    const scalarField& x,
+    scalarField& R
+) const
+{
+    evaluate(x, R, nullptr);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::coupledResidual::jacobian
+(
+    const scalarField& x,
+    blockSystem& system
+) const
+{
+    if (system.nBlock() != nBlock_ || &system.mesh() != &mesh_)
+    {
+        FatalErrorInFunction
+            << "The block system (" << system.nBlock() << " unknowns per"
+            << " cell) is not on this residual's mesh with " << nBlock_
+            << " unknowns per cell" << abort(FatalError);
+    }
+    auto tR = tmp<scalarField>::New();
+    evaluate(x, tR.ref(), &system);
+    return tR;
+}
+
+
+// ************************************************************************* //

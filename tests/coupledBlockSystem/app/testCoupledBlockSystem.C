@@ -1,0 +1,445 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    testCoupledBlockSystem
+
+Description
+    The coupled block layer (src/coupled: blockSystem, coupledResidual) on
+    the three-field diffusion test problem of diffusionTestProblem.H, on a
+    small graded 3-D mesh, serial or parallel:
+
+    1. linear (beta = gamma = 0): the system assembled face by face
+       (assembleLinear) and solved by PETSc (fvSolution 'coupled': GMRES,
+       block Jacobi with ILU), against
+       - OpenFOAM's segregated solution of the same discrete equations
+         (fvm::laplacian, fvm::Sp, the cross terms explicit, swept to a
+         change below 1e-14; PCG to 1e-16): 1e-8 of max |u_k|,
+       - the same system with a direct solver (fvSolution 'coupledDirect':
+         LU; MUMPS in parallel): 1e-10,
+       - the finite-difference Jacobian of the residual (coupledResidual)
+         times a vector against the exact matrix times it: 1e-8;
+    2. nonlinear (beta, gamma of constant/diffusionTestProperties): the
+       Jacobian assembled by local central differences face by face
+       against a central difference of the full residual, every column
+       (1e-6 of the column's largest entry);
+    3. Newton on the nonlinear problem from u = 1: the residual ratios
+       |R_k+1|/|R_k|^2 printed, the order of convergence
+       log(r_k+1/r_k)/log(r_k/r_k-1) at least 1.8 over the last step above
+       the round-off floor (1e-10 of |R_0|), |R| below 1e-12 |R_0| in at
+       most 8 iterations; the same with the Jacobian of the first iteration
+       kept (a plausible wrong Jacobian) converges at first order only.
+
+    Writes blockU0..2 (1.) and newtonU0..2 (3.) for the serial = parallel
+    comparison of the test script. Options: -diverge (the linear solve
+    with fvSolution 'coupledDiverge': must end in a FatalError naming the
+    reason); -newtonCost (Newton alone, the wall time of its assembly and
+    linear solves per iteration and cell: bench/coupledBlock).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "petscSession.H"
+#include "blockSystem.H"
+#include "diffusionTestProblem.H"
+#include "unitChecks.H"
+#include "clockTime.H"
+#include "cpuTime.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Largest magnitude over all ranks
+scalar gMaxMag(const scalarField& x)
+{
+    return gMax(mag(x)());
+}
+
+//- 2-norm over all ranks
+scalar gNorm(const scalarField& x)
+{
+    return Foam::sqrt(gSumSqr(x));
+}
+
+//- Write component k of x as volScalarField name<k>
+void writeFields(const fvMesh& mesh, const word& name, const scalarField& x)
+{
+    for (label k = 0; k < 3; ++k)
+    {
+        volScalarField f
+        (
+            IOobject
+            (
+                name + Foam::name(k),
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE
+            ),
+            mesh,
+            dimensionedScalar("0", dimless, Zero)
+        );
+        f.primitiveFieldRef() = blockSystem::component(x, 3, k);
+        f.write();
+    }
+}
+
+
+//- 1. The linear system: block solve against the segregated route, a
+//  direct solve and the finite-difference Jacobian
+void linearChecks(const fvMesh& mesh, const dictionary& props)
+{
+    section("1. linear coupled diffusion (beta = gamma = 0)");
+    dictionary linearProps(props);
+    linearProps.set("beta", 0.0);
+    linearProps.set("gamma", 0.0);
+    diffusionTestProblem problem(mesh, linearProps);
+
+    blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+    problem.assembleLinear(sys);
+    scalarField x(3*mesh.nCells(), Zero);
+    const solverPerformance perf = sys.solve(x);
+    Info<< "block solve: " << perf.solverName() << ", " << perf.nIterations()
+        << " iterations, residual " << perf.initialResidual() << " -> "
+        << perf.finalResidual() << endl;
+    writeFields(mesh, "blockU", x);
+
+    blockSystem direct(mesh, 3, mesh.solutionDict().subDict("coupledDirect"));
+    problem.assembleLinear(direct);
+    scalarField xDirect(x.size(), Zero);
+    direct.solve(xDirect);
+
+    const label sweeps = problem.solveSegregated(1e-14, 500);
+    checkTrue("segregated sweeps converged", sweeps > 0, sweeps, 500, "<=");
+    for (label k = 0; k < 3; ++k)
+    {
+        const scalarField xk(blockSystem::component(x, 3, k));
+        const scalarField& uk = problem.u(k).primitiveField();
+        const scalar scale = gMaxMag(uk);
+        checkAbs
+        (
+            fmt("u%d: block vs segregated, max|diff|/max|u|", int(k)),
+            gMaxMag(xk - uk)/scale, 0, 1e-8
+        );
+        checkAbs
+        (
+            fmt("u%d: block vs direct (LU), max|diff|/max|u|", int(k)),
+            gMaxMag(xk - blockSystem::component(xDirect, 3, k))/scale,
+            0, 1e-10
+        );
+    }
+
+    // The finite-difference Jacobian of the (linear) residual against the
+    // exact matrix, times a vector
+    blockSystem fdSys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+    problem.jacobian(x, fdSys);
+    scalarField v(x.size()), Av, Jv;
+    forAll(v, i)
+    {
+        v[i] = Foam::sin(1.0 + 0.37*(i + 3*problem.mesh().nCells()
+           *Pstream::myProcNo()));
+    }
+    sys.multiply(v, Av);
+    fdSys.multiply(v, Jv);
+    checkAbs
+    (
+        "FD Jacobian x v vs exact matrix x v, max|diff|/max|Av|",
+        gMaxMag(Jv - Av)/gMaxMag(Av), 0, 1e-8
+    );
+    scalarField R;
+    problem.residual(x, R);
+    checkAbs
+    (
+        "residual of the block solution, max|R|/max|b|",
+        gMaxMag(R)/gMaxMag(sys.source()), 0, 1e-10
+    );
+}
+
+
+//- A smooth state that is not the solution
+tmp<scalarField> testState(const fvMesh& mesh)
+{
+    auto tx = tmp<scalarField>::New(3*mesh.nCells());
+    forAll(mesh.C(), celli)
+    {
+        const vector& c = mesh.C()[celli];
+        for (label k = 0; k < 3; ++k)
+        {
+            tx.ref()[3*celli + k] =
+                1 + 0.3*(k + 1)*Foam::sin(2*c.x() + c.y() - c.z() + k);
+        }
+    }
+    return tx;
+}
+
+
+//- 2. The face-by-face Jacobian against a central difference of the full
+//  residual, column by column (all ranks loop over all global columns)
+void jacobianCheck(const fvMesh& mesh, const diffusionTestProblem& problem)
+{
+    section("2. Jacobian of the nonlinear residual, every column");
+    blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+    const scalarField x0(testState(mesh));
+    problem.jacobian(x0, sys);
+
+    const globalIndex& cells = sys.globalCells();
+    const label offset = cells.offset(Pstream::myProcNo());
+    const scalar h = 1e-5;       // the state is of order 1
+    scalar worst = 0;
+    label worstColumn = -1;
+    scalarField e(x0.size()), Je, Rp, Rm;
+    for (label g = 0; g < 3*cells.size(); ++g)
+    {
+        const label celli = g/3 - offset;
+        const bool mine = celli >= 0 && celli < mesh.nCells();
+        e = Zero;
+        scalarField x(x0);
+        if (mine)
+        {
+            e[3*celli + g%3] = 1;
+            x[3*celli + g%3] += h;
+        }
+        sys.multiply(e, Je);
+        problem.residual(x, Rp);
+        if (mine)
+        {
+            x[3*celli + g%3] -= 2*h;
+        }
+        problem.residual(x, Rm);
+        const scalarField fd((Rp - Rm)/(2*h));
+        const scalar err = gMaxMag(Je - fd)/gMaxMag(fd);
+        if (err > worst)
+        {
+            worst = err;
+            worstColumn = g;
+        }
+    }
+    Info<< "worst column " << worstColumn << " of " << 3*cells.size() << endl;
+    checkAbs
+    (
+        "Jacobian vs central FD of R, worst column max|diff|/max|col|",
+        worst, 0, 1e-6
+    );
+}
+
+
+//- Wall time of Newton's parts, summed over the iterations
+struct newtonCost
+{
+    scalar assembly = 0;    // Jacobian and residual, wall time [s]
+    scalar solve = 0;       // linear solve, wall time [s]
+    scalar assemblyCpu = 0; // the same, CPU time of this process [s]
+    scalar solveCpu = 0;
+    label nSolves = 0;
+    label kspIterations = 0;
+};
+
+
+//- 3. Newton; with a frozen Jacobian if frozen. Returns the residual norms
+DynamicList<scalar> newton
+(
+    const fvMesh& mesh,
+    const diffusionTestProblem& problem,
+    scalarField& x,
+    const bool frozen,
+    const label maxIter,
+    newtonCost& cost
+)
+{
+    blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupledNewton"));
+    DynamicList<scalar> r;
+    scalarField R;
+    clockTime clock;
+    cpuTime cpu;
+    for (label iter = 0; iter <= maxIter; ++iter)
+    {
+        clock.timeIncrement();
+        cpu.cpuTimeIncrement();
+        if (iter == 0 || !frozen)
+        {
+            R = problem.jacobian(x, sys);
+        }
+        else
+        {
+            problem.residual(x, R);
+            sys.source() = -R;
+        }
+        r.append(gNorm(R));
+        cost.assembly += clock.timeIncrement();
+        cost.assemblyCpu += cpu.cpuTimeIncrement();
+        Info<< (frozen ? "frozen" : "Newton") << " iteration " << iter
+            << ": |R| = " << r.last();
+        if (iter > 0)
+        {
+            Info<< ", |R|/|R_prev| = " << r.last()/r[iter - 1]
+                << ", |R|/|R_prev|^2 = " << r.last()/sqr(r[iter - 1]);
+        }
+        Info<< endl;
+        if (r.last() < 1e-13*r.first() || iter == maxIter)
+        {
+            break;
+        }
+        scalarField dx(x.size(), Zero);
+        const solverPerformance perf = sys.solve(dx);
+        x += dx;
+        cost.solve += clock.timeIncrement();
+        cost.solveCpu += cpu.cpuTimeIncrement();
+        ++cost.nSolves;
+        cost.kspIterations += perf.nIterations();
+    }
+    return r;
+}
+
+
+//- Order of convergence at the last step above the floor
+scalar lastOrder(const UList<scalar>& r, const scalar floor)
+{
+    scalar p = 0;
+    for (label k = 1; k + 1 < r.size(); ++k)
+    {
+        if (r[k + 1] > floor)
+        {
+            p = Foam::log(r[k + 1]/r[k])/Foam::log(r[k]/r[k - 1]);
+        }
+    }
+    return p;
+}
+
+
+void newtonChecks(const fvMesh& mesh, const diffusionTestProblem& problem)
+{
+    section("3. Newton on the nonlinear problem from u = 1");
+    scalarField x(3*mesh.nCells(), 1.0);
+    newtonCost cost;
+    const DynamicList<scalar> r = newton(mesh, problem, x, false, 12, cost);
+    const scalar floor = 1e-10*r.first();
+    checkTrue
+    (
+        "Newton iterations to |R| < 1e-12 |R_0|",
+        r.last() < 1e-12*r.first() && r.size() - 1 <= 8,
+        r.size() - 1, 8, "<="
+    );
+    checkAtLeast("order of convergence, last step above floor",
+        lastOrder(r, floor), 1.8, 0);
+    writeFields(mesh, "newtonU", x);
+
+    scalarField xf(3*mesh.nCells(), 1.0);
+    const DynamicList<scalar> rf = newton(mesh, problem, xf, true, 12, cost);
+    const scalar pf = lastOrder(rf, floor);
+    checkTrue
+    (
+        "frozen Jacobian: order of convergence below 1.3",
+        pf < 1.3, pf, 1.3, "<"
+    );
+}
+
+
+//- Newton alone, timed (bench/coupledBlock): the cost per iteration and
+//  cell of the Jacobian assembly and of the linear solve
+void newtonCostOnly(const fvMesh& mesh, const diffusionTestProblem& problem)
+{
+    section("Newton alone, timed");
+    scalarField x(3*mesh.nCells(), 1.0);
+    newtonCost cost;
+    const DynamicList<scalar> r = newton(mesh, problem, x, false, 20, cost);
+    const scalar nCells = returnReduce(mesh.nCells(), sumOp<label>());
+    const label n = max(cost.nSolves, 1);
+    Info<< "newtonCost: cells " << nCells
+        << ", ranks " << Pstream::nProcs()
+        << ", Newton iterations " << cost.nSolves
+        << ", |R|/|R_0| " << r.last()/r.first()
+        << ", KSP iterations per solve " << scalar(cost.kspIterations)/n
+        << nl
+        << "newtonCost: per iteration: assembly " << cost.assembly/n
+        << " s, solve " << cost.solve/n << " s, total "
+        << (cost.assembly + cost.solve)/n << " s, "
+        << 1e6*(cost.assembly + cost.solve)/n/nCells << " us per cell"
+        << nl
+        << "newtonCost: per iteration, CPU of the master: assembly "
+        << cost.assemblyCpu/n << " s, solve " << cost.solveCpu/n
+        << " s, total " << (cost.assemblyCpu + cost.solveCpu)/n << " s"
+        << endl;
+    checkTrue
+    (
+        "Newton converged to |R| < 1e-10 |R_0|",
+        r.last() < 1e-10*r.first(), r.last()/r.first(), 1e-10, "<"
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addBoolOption
+    (
+        "newtonCost",
+        "only Newton on the nonlinear problem, timed (bench/coupledBlock)"
+    );
+    argList::addBoolOption
+    (
+        "diverge",
+        "solve the linear system with fvSolution 'coupledDiverge' only"
+    );
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    {
+        petscSession petsc;
+
+        const IOdictionary props
+        (
+            IOobject
+            (
+                "diffusionTestProperties",
+                runTime.constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE
+            )
+        );
+
+        if (args.found("diverge"))
+        {
+            dictionary linearProps(props);
+            linearProps.set("beta", 0.0);
+            linearProps.set("gamma", 0.0);
+            diffusionTestProblem problem(mesh, linearProps);
+            blockSystem sys
+            (
+                mesh, 3, mesh.solutionDict().subDict("coupledDiverge")
+            );
+            problem.assembleLinear(sys);
+            scalarField x(3*mesh.nCells(), Zero);
+            sys.solve(x);
+            Info<< "coupledDiverge: the solver converged" << endl;
+        }
+        else if (args.found("newtonCost"))
+        {
+            newtonCostOnly(mesh, diffusionTestProblem(mesh, props));
+        }
+        else
+        {
+            linearChecks(mesh, props);
+            const diffusionTestProblem problem(mesh, props);
+            jacobianCheck(mesh, problem);
+            newtonChecks(mesh, problem);
+        }
+    }
+
+    Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
+        << endl;
+
+    // Not a return from main: in v1912 argList's destructor ends the
+    // process with Pstream::exit(0), which would hide failed checks
+    Pstream::exit(nFailed > 0 ? 1 : 0);
+    return 0;
+}
+
+
+// ************************************************************************* //
