@@ -92,25 +92,28 @@ Foam::phaseProperties Foam::soilProperties::readPhase(const word& phase) const
             ).value();
         };
 
+    // A phase from three flat keywords, read in this order
+    const auto flat =
+        [&]
+        (
+            const word& rhoKey, const scalar rho0,
+            const word& CpKey, const scalar Cp0,
+            const word& kappaKey, const scalar kappa0
+        )
+        {
+            const scalar rho = read(rhoKey, dimDensity, rho0);
+            const scalar Cp = read(CpKey, dimCp, Cp0);
+            const scalar kappa = read(kappaKey, dimKappa, kappa0);
+            return phaseProperties(phase, rho, Cp, kappa);
+        };
+
     if (phase == "solid")
     {
-        return phaseProperties
-        (
-            phase,
-            read("rhoSolid", dimDensity, 2600),
-            read("CpSolid", dimCp, 800),
-            read("kappaSolid", dimKappa, 3.0)
-        );
+        return flat("rhoSolid", 2600, "CpSolid", 800, "kappaSolid", 3.0);
     }
     if (phase == "liquid")
     {
-        return phaseProperties
-        (
-            phase,
-            read("rhoL", dimDensity, 1000),
-            read("CpLiquid", dimCp, 4200),
-            read("kappaLiquid", dimKappa, 0.6)
-        );
+        return flat("rhoL", 1000, "CpLiquid", 4200, "kappaLiquid", 0.6);
     }
     return phaseProperties(phase, 0, 0, read("kappaGas", dimKappa, 0.026));
 }
