@@ -203,10 +203,18 @@ def energy_balance(log, block=-1):
     return res
 
 
-def latent_heat(path='constant/porousProperties'):
-    """latentHeat [J/kg] of a porousProperties file (nan if absent)"""
+def latent_heat(path=None):
+    """latentHeat [J/kg] of ahcFoam's phaseChange in a soil dictionary
+    (default: constant/soilProperties, else its deprecated alias
+    constant/porousProperties; nan if absent)"""
+    if path is None:
+        path = 'constant/soilProperties'
+        if not os.path.exists(path):
+            path = 'constant/porousProperties'
     with open(path) as f:
-        m = re.search(r'latentHeat\s+([^;\s]+)\s*;', f.read())
+        text = f.read()
+    m = re.search(r'phaseChange\s*\{[^}]*?latentHeat\s+([^;\s]+)\s*;', text) \
+        or re.search(r'latentHeat\s+([^;\s]+)\s*;', text)
     return float(m.group(1)) if m else float('nan')
 
 

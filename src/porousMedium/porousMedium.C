@@ -34,10 +34,10 @@ inline void Foam::porousMedium::cellEnthalpy
     scalar& C
 ) const
 {
-    const scalar phi = porosity_[celli];
+    const scalar phi = porosity()[celli];
     const scalar theta0 = waterContent_[celli];
     const scalar rhoCpDry =
-        (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*vapour_.rhoCp();
+        (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*gas().rhoCp();
 
     H = rhoCpDry*T;
     C = rhoCpDry;
@@ -57,7 +57,7 @@ Foam::scalar Foam::porousMedium::kappaCell
     const scalar TMax
 ) const
 {
-    const scalar phi = porosity_[celli];
+    const scalar phi = porosity()[celli];
     const scalar thetaL =
         waterContent_[celli]
        *(1.0 - phaseChange_->evaporatedFraction(T, TMax));
@@ -67,9 +67,9 @@ Foam::scalar Foam::porousMedium::kappaCell
     // the table k_e(alpha_l) of conductivityModel tabulated
     const scalar alphaL = phi > SMALL ? thetaL/phi : 0;
 
-    return conductivityModel_->kappaPartiallySaturated
+    return conductivityModel().kappaPartiallySaturated
     (
-        kappaSolid_[celli], liquid_.kappa(), vapour_.kappa(), alphaL, phi
+        kappaSolid_[celli], liquid().kappa(), gas().kappa(), alphaL, phi
     );
 }
 
@@ -78,32 +78,8 @@ Foam::scalar Foam::porousMedium::kappaCell
 
 Foam::porousMedium::porousMedium(const fvMesh& mesh)
 :
-    IOdictionary
-    (
-        IOobject
-        (
-            "porousProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ_IF_MODIFIED,
-            IOobject::NO_WRITE
-        )
-    ),
+    soilProperties(mesh, soilProperties::layout::porousAlias),
     mesh_(mesh),
-    solid_(*this, "solid"),
-    liquid_(*this, "liquid"),
-    vapour_(*this, "vapour"),
-    porosity_
-    (
-        propertyField
-        (
-            "porosity",
-            checkedRead::get
-            (
-                *this, "porosity", dimless, checkedRead::closedOpen(0, 1)
-            )
-        )
-    ),
     waterContent_
     (
         propertyField("waterContent", dimensionedScalar(dimless, Zero))
@@ -117,7 +93,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
             (
                 "rhoCpSolid",
                 dimEnergy/dimVolume/dimTemperature,
-                solid_.rhoCp()
+                solid().rhoCp()
             )
         )
     ),
@@ -130,14 +106,15 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
             (
                 "kappaSolid",
                 dimPower/dimLength/dimTemperature,
-                solid_.kappa()
+                solid().kappa()
             )
         )
     ),
-    conductivityModel_(effectiveConductivityModel::New(*this)),
     phaseChange_(nullptr)
 {
     // Unknown keywords: a misspelt one would be ignored or take a default
+    // (constant/soilProperties: checked by soilProperties)
+    if (alias())
     {
         wordList allowed
         ({
@@ -148,7 +125,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
         (
             checkedRead::modelKeywords
             (
-                *this, "conductivityModel", conductivityModel_()
+                *this, "conductivityModel", conductivityModel()
             )
         );
         checkedRead::checkKeywords(*this, allowed);
@@ -160,7 +137,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
     // Cell fields overriding uniform values
     checkedRead::check
     (
-        porosity_.objectPath(), "porosity", porosity_, range01
+        porosity().objectPath(), "porosity", porosity(), range01
     );
     checkedRead::check
     (
@@ -185,7 +162,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
                 << " in dictionary "
                 << name() << ": expected exactly one of waterContent"
                 << " (volumetric, in the range [0, porosity = "
-                << gMin(porosity_.primitiveField()) << "]) or saturation"
+                << gMin(porosity().primitiveField()) << "]) or saturation"
                 << " (in the range [0, 1]), or the cell field "
                 << waterContent_.objectPath() << nl
                 << exit(FatalIOError);
@@ -198,7 +175,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
                 (
                     *this, "saturation", dimless, checkedRead::closed(0, 1)
                 ).value();
-            waterContent_.primitiveFieldRef() = S*porosity_.primitiveField();
+            waterContent_.primitiveFieldRef() = S*porosity().primitiveField();
         }
         else
         {
@@ -208,7 +185,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
                     *this, "waterContent", dimless, checkedRead::closed(0, 1)
                 ).value();
 
-            const scalar phiMin = gMin(porosity_.primitiveField());
+            const scalar phiMin = gMin(porosity().primitiveField());
             if (theta0 > phiMin)
             {
                 FatalIOErrorInFunction(*this)
@@ -228,7 +205,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
         if
         (
             waterContent_[celli] < 0
-         || waterContent_[celli] > porosity_[celli] + SMALL
+         || waterContent_[celli] > porosity()[celli] + SMALL
         )
         {
             dictionary fieldDict;
@@ -236,7 +213,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
             FatalIOErrorInFunction(fieldDict)
                 << "Field 'waterContent' = " << waterContent_[celli]
                 << " in cell " << celli << " is outside its valid range"
-                << " [0, porosity = " << porosity_[celli] << "]" << nl
+                << " [0, porosity = " << porosity()[celli] << "]" << nl
                 << exit(FatalIOError);
         }
     }
@@ -250,10 +227,10 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
             << exit(FatalIOError);
     }
     phaseChange_ =
-        apparentHeatCapacityModel::New(subDict("phaseChange"), liquid_, vapour_);
+        apparentHeatCapacityModel::New(subDict("phaseChange"), liquid(), gas());
 
-    Info<< "Porous medium: porosity " << gMin(porosity_.primitiveField())
-        << " to " << gMax(porosity_.primitiveField())
+    Info<< "Porous medium: porosity " << gMin(porosity().primitiveField())
+        << " to " << gMax(porosity().primitiveField())
         << ", water content " << gMin(waterContent_.primitiveField())
         << " to " << gMax(waterContent_.primitiveField()) << nl
         << "    conductivity model " << get<word>("conductivityModel")
@@ -332,10 +309,10 @@ Foam::label Foam::porousMedium::temperature
 
     forAll(T, celli)
     {
-        const scalar phi = porosity_[celli];
+        const scalar phi = porosity()[celli];
         const scalar theta0 = waterContent_[celli];
         const scalar minCapacity =
-            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*vapour_.rhoCp()
+            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*gas().rhoCp()
           + theta0*waterMinCapacity;
 
         scalar Ti = T[celli];

@@ -11,7 +11,7 @@ Description
 
         dH(T; TMax)/dt = div(k_e(T; TMax) grad T)
 
-    H and k_e come from porousMedium (constant/porousProperties). Each step
+    H and k_e come from porousMedium (constant/soilProperties). Each step
     is implicit (backward Euler) and solved by modified-Picard iterations
 
         C^k (T^{k+1} - T^k)/dt + (H^k - H^n)/dt = div(k_e^k grad T^{k+1})
@@ -42,6 +42,7 @@ Description
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
+#include "subStepController.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"
 
@@ -68,10 +69,7 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
-        stepControls.setDeltaT
-        (
-            runTime, lastDeltaT, lastMaxChange, lastIterations
-        );
+        subSteps.setDeltaT(runTime);
 
         ++runTime;
 

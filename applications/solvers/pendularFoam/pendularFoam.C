@@ -56,6 +56,7 @@ Description
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
+#include "subStepController.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"
 #include "upwind.H"
@@ -83,10 +84,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        stepControls.setDeltaT
-        (
-            runTime, lastDeltaT, lastMaxChange, lastIterations
-        );
+        subSteps.setDeltaT(runTime);
 
         ++runTime;
 

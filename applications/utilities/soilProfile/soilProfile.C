@@ -6,7 +6,7 @@ Application
 
 Description
     Writes the cell fields that override the uniform soil values of
-    constant/porousProperties in ahcFoam (README "The soil"):
+    constant/soilProperties (or porousProperties) in ahcFoam (README "The soil"):
 
         porosity        [-]         [0, 1)
         waterContent    [-]         volumetric, [0, porosity]
@@ -69,7 +69,7 @@ Description
       depth and the position of the first bad cell are named); the water
       content is checked against the porosity of each cell: the one
       written by the same run, else 0/porosity, else the porosity of
-      constant/porousProperties; a porosity written alone is checked
+      constant/soilProperties (or porousProperties); a porosity written alone is checked
       against the existing water content in the same way;
     - existing fields (a FatalError listing them): a field of the start
       time not written by soilProfile (no 'note "soilProfile ..."' in its
@@ -726,14 +726,28 @@ int main(int argc, char *argv[])
 
     // Ranges. Water content and porosity are checked against each other:
     // the one written now, else the cell field of the start time, else the
-    // uniform value of constant/porousProperties
+    // uniform value of constant/soilProperties (or of its deprecated alias
+    // constant/porousProperties)
     const label iPor = 0, iWat = 1;
+
+    word soilFile("soilProperties");
+    {
+        IOobject io
+        (
+            soilFile, runTime.constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!io.typeHeaderOk<IOdictionary>(false))
+        {
+            soilFile = "porousProperties";
+        }
+    }
 
     auto porousPropertiesValue = [&](const word& key, scalar& v) -> bool
     {
         IOobject io
         (
-            "porousProperties",
+            soilFile,
             runTime.constant(),
             mesh,
             IOobject::MUST_READ,
@@ -785,7 +799,7 @@ int main(int argc, char *argv[])
         else if (porousPropertiesValue("porosity", uniform))
         {
             porosity = uniform;
-            source = "constant/porousProperties";
+            source = "constant/" + soilFile;
         }
         else
         {
@@ -794,7 +808,7 @@ int main(int argc, char *argv[])
                 << " against the porosity (the water content cannot exceed"
                 << " it): give 'porosity' in the same dictionary, or the"
                 << " field " << runTime.timeName()/"porosity"
-                << ", or the keyword 'porosity' of constant/porousProperties"
+                << ", or the keyword 'porosity' of constant/" << soilFile
                 << nl << exit(FatalIOError);
         }
         checkRange
@@ -817,7 +831,7 @@ int main(int argc, char *argv[])
         else if (porousPropertiesValue("waterContent", uniform))
         {
             water = uniform;
-            source = "keyword 'waterContent' of constant/porousProperties";
+            source = "keyword 'waterContent' of constant/" + soilFile;
         }
         else
         {

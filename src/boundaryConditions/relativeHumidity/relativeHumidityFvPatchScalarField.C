@@ -183,8 +183,19 @@ void Foam::relativeHumidityFvPatchScalarField::updateCoeffs()
     const scalar t = db().time().timeOutputValue();
     const scalar RH = relativeHumidity();
 
-    const pendularMedium& medium =
-        db().lookupObject<pendularMedium>("pendularProperties");
+    // The medium is registered under the name of its file (soilProperties
+    // or the alias pendularProperties)
+    const HashTable<const pendularMedium*> media =
+        db().lookupClass<pendularMedium>();
+    if (media.size() != 1)
+    {
+        FatalErrorInFunction
+            << "Boundary condition " << type() << " on patch "
+            << patch().name() << " needs the pendular medium of"
+            << " pendularFoam; found " << media.size() << nl
+            << exit(FatalError);
+    }
+    const pendularMedium& medium = *media.cbegin().val();
     const fvPatchScalarField& Tp =
         patch().lookupPatchField<volScalarField, scalar>(TName_);
 

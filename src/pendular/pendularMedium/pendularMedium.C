@@ -17,37 +17,34 @@ const Foam::scalar Foam::pendularMedium::alphaLDry = 1e-100;
 const Foam::scalar Foam::pendularMedium::criticalMargin = 10;
 const Foam::scalar Foam::pendularMedium::alphaLCritical = 1e-9;
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::dictionary& Foam::pendularMedium::kelvinDictionary()
+{
+    if (!alias())
+    {
+        kelvinDict_.set("rhoL", liquid().rho());
+    }
+    return kelvinDict_;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
 :
-    IOdictionary
-    (
-        IOobject
-        (
-            "pendularProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    ),
+    soilProperties(mesh, soilProperties::layout::pendularAlias),
     mesh_(mesh),
-    porosity_
-    (
-        propertyField
-        (
-            mesh,
-            "porosity",
-            checkedRead::getOrDefault
-            (
-                *this, "porosity", dimless, 0.26, checkedRead::closedOpen(0, 1)
-            )
-        )
-    ),
-    kelvin_(*this),
-    permeability_(gasPermeabilityModel::New(*this)),
-    conductivity_(effectiveConductivityModel::New(*this)),
+    closures_(closures("pendular")),
+    rhoSolid_(solid().rho()),
+    CpSolid_(solid().Cp()),
+    kappaSolid_(solid().kappa()),
+    CpLiquid_(liquid().Cp()),
+    kappaLiquid_(liquid().kappa()),
+    kappaGas_(gas().kappa()),
+    kelvinDict_(closures_),
+    kelvin_(kelvinDictionary()),
+    permeability_(gasPermeabilityModel::New(closures_)),
     minimumTemperature_
     (
         max
@@ -70,12 +67,11 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     {
         wordList allowed
         ({
-            "porosity", "rhoSolid", "CpSolid", "kappaSolid", "CpLiquid",
-            "kappaLiquid", "kappaGas", "CpAir", "Ma", "CpVapour",
+            "CpAir", "Ma", "CpVapour",
             "latentHeat", "latentHeatTemperature", "vapourDiffusivity",
             "gasViscosity", "tortuosity", "waterModel", "nonEquilibriumCoeffs"
         });
-        if (!isDict("nonEquilibriumCoeffs"))
+        if (!closures_.isDict("nonEquilibriumCoeffs"))
         {
             allowed.append("relaxationFactor");
         }
@@ -83,46 +79,57 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         {
             checkedRead::checkKeywords
             (
-                subDict("nonEquilibriumCoeffs"),
+                closures_.subDict("nonEquilibriumCoeffs"),
                 wordList({"relaxationFactor"})
             );
         }
-        allowed.append(kelvin_.keywords(*this));
+        for (const word& key : kelvin_.keywords(closures_))
+        {
+            // soilProperties: the liquid density is liquid { rho; }
+            if (alias() || key != "rhoL")
+            {
+                allowed.append(key);
+            }
+        }
         allowed.append
         (
             checkedRead::modelKeywords
             (
-                *this, "gasPermeabilityModel", permeability_()
+                closures_, "gasPermeabilityModel", permeability_()
             )
         );
-        allowed.append
-        (
-            checkedRead::modelKeywords
+        if (alias())
+        {
+            allowed.append
             (
-                *this, "conductivityModel", conductivity_()
-            )
-        );
-        checkedRead::checkKeywords(*this, allowed);
+                wordList
+                ({
+                    "porosity", "rhoSolid", "CpSolid", "kappaSolid",
+                    "CpLiquid", "kappaLiquid", "kappaGas"
+                })
+            );
+            allowed.append
+            (
+                checkedRead::modelKeywords
+                (
+                    *this, "conductivityModel", conductivityModel()
+                )
+            );
+        }
+        checkedRead::checkKeywords(closures_, allowed);
     }
 
     const auto positive = checkedRead::positive();
     const dimensionSet dimCp(dimEnergy/dimMass/dimTemperature);
-    const dimensionSet dimKappa(dimPower/dimLength/dimTemperature);
     const auto read =
         [&](const word& key, const dimensionSet& dims, scalar deflt)
         {
             return checkedRead::getOrDefault
             (
-                *this, key, dims, deflt, positive
+                closures_, key, dims, deflt, positive
             ).value();
         };
 
-    rhoSolid_ = read("rhoSolid", dimDensity, 2600);
-    CpSolid_ = read("CpSolid", dimCp, 800);
-    kappaSolid_ = read("kappaSolid", dimKappa, 3.0);
-    CpLiquid_ = read("CpLiquid", dimCp, 4200);
-    kappaLiquid_ = read("kappaLiquid", dimKappa, 0.6);
-    kappaGas_ = read("kappaGas", dimKappa, 0.026);
     CpAir_ = read("CpAir", dimCp, 1005);
     Ma_ = read("Ma", dimMass/dimMoles, 0.029);
     CpVapour_ = read("CpVapour", dimCp, 1890);
@@ -134,17 +141,17 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     tortuosity_ =
         checkedRead::getOrDefault
         (
-            *this, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
+            closures_, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
         ).value();
 
     const word waterModel
     (
-        getOrDefault<word>("waterModel", "equilibrium")
+        closures_.getOrDefault<word>("waterModel", "equilibrium")
     );
     if (waterModel != "equilibrium" && waterModel != "nonEquilibrium")
     {
-        FatalIOErrorInFunction(*this)
-            << "Unknown waterModel " << waterModel << " in " << objectPath()
+        FatalIOErrorInFunction(closures_)
+            << "Unknown waterModel " << waterModel << " in " << closures_.name()
             << nl << "    Valid: equilibrium (model A: Kelvin-Laplace"
             << " equilibrium) or nonEquilibrium (model B: ATMM rate law)"
             << exit(FatalIOError);
@@ -153,7 +160,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     relaxationFactor_ =
         checkedRead::getOrDefault
         (
-            optionalSubDict("nonEquilibriumCoeffs"), "relaxationFactor",
+            closures_.optionalSubDict("nonEquilibriumCoeffs"), "relaxationFactor",
             dimless, 1, positive
         ).value();
     if (nonEquilibrium_)
@@ -168,12 +175,12 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
 
     checkedRead::check
     (
-        porosity_.objectPath(), "porosity", porosity_,
+        porosity().objectPath(), "porosity", porosity(),
         checkedRead::closedOpen(SMALL, 1)
     );
 
-    Info<< "Pendular medium: porosity " << gMin(porosity_.primitiveField())
-        << " to " << gMax(porosity_.primitiveField())
+    Info<< "Pendular medium: porosity " << gMin(porosity().primitiveField())
+        << " to " << gMax(porosity().primitiveField())
         << ", (rho C)_s " << rhoSolid_*CpSolid_ << " J/(m3 K)"
         << ", L " << latentHeat_ << " J/kg at " << latentHeatTemperature_
         << " K, tau_s D_wa " << vapourDiffusivity() << " m2/s"
@@ -820,7 +827,7 @@ Foam::scalar Foam::pendularMedium::kappa
     const scalar porosity
 ) const
 {
-    return conductivity_->kappaPartiallySaturated
+    return conductivityModel().kappaPartiallySaturated
     (
         kappaSolid_, kappaLiquid_, kappaGas_, alphaL, porosity
     );

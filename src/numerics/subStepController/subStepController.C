@@ -1,0 +1,114 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "subStepController.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::subStepController::subStepController
+(
+    const word& solverName,
+    const adaptiveTimeStepControls& controls,
+    const scalar deltaT0
+)
+:
+    solverName_(solverName),
+    controls_(controls),
+    lastDeltaT_(deltaT0),
+    lastMaxChange_(0),
+    lastIterations_(0),
+    DeltaT_(deltaT0),
+    elapsed_(0),
+    dt_(deltaT0),
+    nRejected_(0),
+    nSubSteps_(0),
+    totalIter_(0),
+    maxChange_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::subStepController::setDeltaT(Time& runTime) const
+{
+    controls_.setDeltaT
+    (
+        runTime, lastDeltaT_, lastMaxChange_, lastIterations_
+    );
+}
+
+
+void Foam::subStepController::start(const scalar DeltaT)
+{
+    DeltaT_ = DeltaT;
+    elapsed_ = 0;
+    dt_ = DeltaT;
+    nRejected_ = 0;
+    nSubSteps_ = 0;
+    totalIter_ = 0;
+    maxChange_ = 0;
+}
+
+
+bool Foam::subStepController::loop()
+{
+    if (elapsed_ < DeltaT_*(1 - 1e-10))
+    {
+        dt_ = min(dt_, DeltaT_ - elapsed_);
+        return true;
+    }
+    return false;
+}
+
+
+void Foam::subStepController::accept
+(
+    const label iter,
+    const scalar maxChange
+)
+{
+    totalIter_ += iter;
+    maxChange_ = max(maxChange_, maxChange);
+    elapsed_ += dt_;
+    ++nSubSteps_;
+    lastDeltaT_ = dt_;
+    lastIterations_ = iter;
+}
+
+
+bool Foam::subStepController::reject(const label iter, const string& reason)
+{
+    totalIter_ += iter;
+    dt_ *= 0.5;
+    ++nRejected_;
+
+    Info<< "    step rejected after " << iter << " iterations";
+    if (!reason.empty())
+    {
+        Info<< " (" << reason.c_str() << ")";
+    }
+    Info<< ": retry with deltaT = " << dt_ << endl;
+
+    return dt_ < controls_.minDeltaT();
+}
+
+
+void Foam::subStepController::end()
+{
+    lastMaxChange_ =
+        maxChange_*DeltaT_/max(lastDeltaT_, SMALL)/max(nSubSteps_, 1);
+}
+
+
+Foam::string Foam::subStepController::summary() const
+{
+    OStringStream os;
+    os  << solverName_ << ": deltaT = " << DeltaT_ << ", iterations = "
+        << totalIter_ << ", sub-steps = " << nSubSteps_ << ", rejected = "
+        << nRejected_ << ", max |dT| = " << maxChange_;
+    return os.str();
+}
+
+// ************************************************************************* //
