@@ -39,7 +39,7 @@ Description
     removed at the end (-keepScratch keeps them).  -writeCase DIR writes a copy of the case with the best
     parameters.
 
-    Optimiser: hearthFit::levenbergMarquardt (leastSquares/).
+    Optimiser: hearthFit::levenbergMarquardt (src/numerics/leastSquares).
 
     Nothing is written outside <workDir> but the -writeCase copy: an
     existing -writeCase directory is refused without -overwrite, the case
