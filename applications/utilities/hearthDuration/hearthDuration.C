@@ -220,6 +220,7 @@ int main(int argc, char *argv[])
     (
         runTime, firePatch, fire, points, solver, nProcs, mpirun, workDir
     );
+    scratchCase::catchInterrupts();
 
     DynamicList<runRecord> runs;
     const auto wallStart = std::chrono::steady_clock::now();
