@@ -52,49 +52,10 @@ Foam::fitForwardRuns::fitForwardRuns
     // Parallel forward runs: each scratch copy is decomposed (decomposePar,
     // system/decomposeParDict of the case) and run as
     // '<mpirun> -np N <solver> -parallel -case <copy>'
-    mpirun =
-        fwdDict.getOrDefault<string>
-        (
-            "mpirun",
-            ::geteuid() == 0
-          ? "mpirun --allow-run-as-root --oversubscribe"
-          : "mpirun --oversubscribe"
-        );
-    if (nProcs > 1)
-    {
-        const std::string launcher(mpirun.substr(0, mpirun.find(' ')));
-        for (const std::string& exe : {launcher, std::string("decomposePar")})
-        {
-            const std::string cmd
-            (
-                "command -v '" + exe + "' > /dev/null 2>&1"
-            );
-            if (exe.empty() || std::system(cmd.c_str()) != 0)
-            {
-                FatalIOErrorInFunction(fwdDict)
-                    << "forwardModel: nProcs " << nProcs << " needs "
-                    << exe.c_str() << ", not found on the PATH (keyword"
-                    << " mpirun: '" << mpirun.c_str() << "')"
-                    << exit(FatalIOError);
-            }
-        }
-        label nDomains = 0;
-        const fileName decFile(runTime.path()/"system"/"decomposeParDict");
-        if (isFile(decFile))
-        {
-            IFstream is(decFile);
-            const dictionary dd(is);
-            nDomains = dd.getOrDefault<label>("numberOfSubdomains", 0);
-        }
-        if (nDomains != nProcs)
-        {
-            FatalIOErrorInFunction(fwdDict)
-                << "forwardModel: nProcs " << nProcs << " but " << decFile
-                << " has numberOfSubdomains " << nDomains << " (0: no such"
-                << " file or keyword): valid are 1 (serial) or"
-                << " numberOfSubdomains" << exit(FatalIOError);
-        }
-    }
+    mpirun = scratchCase::launcher
+    (
+        fwdDict, nProcs, runTime.path(), wordList({"decomposePar"})
+    );
     maxConcurrent =
         max(1, fwdDict.lookupOrDefault<label>("maxConcurrentRuns", 1));
     foName = fwdDict.lookupOrDefault<word>("functionObject", "thermocouples");

@@ -437,6 +437,80 @@ std::string Foam::scratchCase::errorMessage
 }
 
 
+bool Foam::scratchCase::onPath(const std::string& exe)
+{
+    const std::string path(getEnv("PATH"));
+    std::string::size_type b = 0;
+    while (b <= path.size())
+    {
+        std::string::size_type e = path.find(':', b);
+        if (e == std::string::npos) e = path.size();
+        if (e > b && isFile(fileName(path.substr(b, e - b))/exe, false))
+        {
+            return true;
+        }
+        b = e + 1;
+    }
+    return false;
+}
+
+
+Foam::string Foam::scratchCase::launcher
+(
+    const dictionary& dict,
+    const label nProcs,
+    const fileName& casePath,
+    const wordList& tools
+)
+{
+    const string mpirun
+    (
+        dict.getOrDefault<string>
+        (
+            "mpirun",
+            ::geteuid() == 0
+          ? "mpirun --allow-run-as-root --oversubscribe"
+          : "mpirun --oversubscribe"
+        )
+    );
+    if (nProcs <= 1)
+    {
+        return mpirun;
+    }
+
+    wordList exes(1, word(mpirun.substr(0, mpirun.find(' ')), false));
+    exes.append(tools);
+    for (const word& exe : exes)
+    {
+        if (exe.empty() || !onPath(exe))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'nProcs' = " << nProcs << " needs '" << exe
+                << "', not found on the PATH (keyword 'mpirun' = '"
+                << mpirun.c_str() << "')" << nl << exit(FatalIOError);
+        }
+    }
+
+    label nDomains = 0;
+    const fileName decFile(casePath/"system"/"decomposeParDict");
+    if (isFile(decFile))
+    {
+        IFstream is(decFile);
+        const dictionary dd(is);
+        nDomains = dd.getOrDefault<label>("numberOfSubdomains", 0);
+    }
+    if (nDomains != nProcs)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'nProcs': nProcs " << nProcs << " but " << decFile
+            << " has numberOfSubdomains " << nDomains << " (0: no such"
+            << " file or keyword): valid are 1 (serial) or"
+            << " numberOfSubdomains" << nl << exit(FatalIOError);
+    }
+    return mpirun;
+}
+
+
 void Foam::scratchCase::catchInterrupts()
 {
     struct sigaction sa;
