@@ -23,10 +23,11 @@
   this check without anything being wrong; whether the intervals are
   honest is tested over 10 seeds by tests/hearthFitCoverage;
 - failing runs: at least one forward run failed and the fit still
-  recovers the truth within 0.5 %;
+  recovers the truth within 0.5 %; the failed run's own message (the
+  failing solver's line) is in hearthFit's output, not only in its log;
 - bad input: each of the 12 cases of run step 5 failed with its message and
   made no scratch copy (badInput.txt);
-- zero residual (run step 6): exit status 0 (converged: zeroResidual), no
+- zero residual (run step 6, no sigma given): exit status 0 (converged: zeroResidual), no
   crash signal or stack trace in the log, cost 0 and s^2 = 0 said in the
   report, the estimates equal to the truth, standard errors 0 and
   zero-width intervals (lower = upper = estimate) in parameters.csv, a
@@ -210,6 +211,13 @@ m = re.search(r'forward runs (\d+) \((\d+) failed\)', rep)
 c.true('failing: some forward runs failed (%s)' % (m.group(0) if m else '?'),
        m is not None and int(m.group(2)) > 0)
 c.true('failing: converged', '(converged)' in rep)
+with open('failing/log.hearthFit') as f:
+    flog = f.read()
+c.true("failing: the failed run's own message in hearthFit's output",
+       re.search(r'forward run \d+ failed \(exit status 1\), parameters.*'
+                 r'\n *its log says:'
+                 r'\n *failingSolver: kappa \S+ > 1.2: failing on purpose',
+                 flog) is not None)
 for k, v in truth.items():
     c.le('failing: |%s - truth|/truth (estimate %s)' % (k, p[k]['estimate']),
          abs(float(p[k]['estimate']) - v)/v, 0.005)

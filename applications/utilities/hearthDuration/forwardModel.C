@@ -10,41 +10,6 @@
 #include "OFstream.H"
 #include "IFstream.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-    using namespace Foam;
-
-    //- A path between single quotes for /bin/sh
-    std::string quoted(const fileName& f)
-    {
-        return "'" + f + "'";
-    }
-
-    //- Does the log end with the solver's 'End'?
-    bool endedNormally(const fileName& log)
-    {
-        IFstream is(log);
-        if (!is.good())
-        {
-            return false;
-        }
-
-        bool ended = false;
-        string line;
-        while (is.getLine(line))
-        {
-            if (line == "End")
-            {
-                ended = true;
-            }
-        }
-        return ended;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * //
 
 void Foam::forwardModel::writeControlDict(const scalar endTime) const
@@ -61,48 +26,13 @@ void Foam::forwardModel::writeControlDict(const scalar endTime) const
     dict.set("timePrecision", 12);
     dict.set("runTimeModifiable", false);
 
-    OFstream os(scratch_/"system"/"controlDict");
-    os  << "FoamFile" << nl
-        << "{" << nl
-        << "    version     2.0;" << nl
-        << "    format      ascii;" << nl
-        << "    class       dictionary;" << nl
-        << "    object      controlDict;" << nl
-        << "}" << nl
-        << "// The case's controlDict, run by hearthDuration: functions"
-        << " removed, start, end and write times set" << nl << nl;
-    dict.write(os, false);
-}
-
-
-void Foam::forwardModel::removeResults() const
-{
-    fileNameList dirs(1, scratch_);
-    for (label proci = 0; nProcs_ > 1 && proci < nProcs_; ++proci)
-    {
-        dirs.append(scratch_/word("processor" + Foam::name(proci)));
-    }
-
-    for (const fileName& dir : dirs)
-    {
-        for (const instant& t : Time::findTimes(dir))
-        {
-            if (t.value() > startTime_ && t.name() != startTimeName_)
-            {
-                rmDir(dir/t.name());
-            }
-        }
-    }
-}
-
-
-int Foam::forwardModel::execute
-(
-    const std::string& command,
-    const fileName& log
-) const
-{
-    return Foam::system(command + " > " + quoted(log) + " 2>&1");
+    scratchCase::writeDictionary
+    (
+        scratch_/"system"/"controlDict",
+        dict,
+        "The case's controlDict, run by hearthDuration: functions removed,"
+        " start, end and write times set"
+    );
 }
 
 
@@ -161,6 +91,7 @@ Foam::forwardModel::forwardModel
     mpirun_(mpirun),
     fire_(fire),
     scratch_(workDir/"scratchCase"),
+    copy_(),
     startTime_(runTime.value()),
     startTimeName_(runTime.timeName()),
     controlDict_(runTime.controlDict()),
@@ -187,22 +118,13 @@ Foam::forwardModel::forwardModel
     controlDict_.remove("functions");
 
     // The copy: system, constant and the start time
-    if (isDir(scratch_))
-    {
-        rmDir(scratch_);
-    }
-    if
+    copy_.reset
     (
-        !mkDir(scratch_)
-     || !cp(casePath/"system", scratch_)
-     || !cp(casePath/"constant", scratch_)
-     || !cp(casePath/startTimeName_, scratch_)
-    )
-    {
-        FatalErrorInFunction
-            << "Cannot copy system, constant and " << startTimeName_
-            << " of " << casePath << " to " << scratch_ << exit(FatalError);
-    }
+        new scratchCase
+        (
+            casePath, startTimeName_, startTime_, scratch_, nProcs_, mpirun_
+        )
+    );
     rm(scratch_/"constant"/"fireHistory");
 
     Info<< "Scratch copy of the case: " << scratch_ << endl;
@@ -287,13 +209,7 @@ Foam::forwardModel::forwardModel
     if (nProcs_ > 1)
     {
         const fileName log(scratch_/"log.decomposePar");
-        if
-        (
-            execute
-            (
-                "decomposePar -force -case " + quoted(scratch_), log
-            )
-        )
+        if (!copy_->decompose())
         {
             FatalErrorInFunction
                 << "decomposePar failed on the scratch case: see " << log
@@ -320,32 +236,27 @@ Foam::scalarField Foam::forwardModel::run
 
     fire_.write(scratch_/"constant"/"fireHistory", duration, startTime_);
     writeControlDict(endTime);
-    removeResults();
+    copy_->removeResults();
 
     log = scratch_/word("log." + solver_ + "." + Foam::name(runIndex));
 
-    std::string command;
-    if (nProcs_ > 1)
-    {
-        command =
-            mpirun_ + " -np " + Foam::name(nProcs_) + " " + solver_
-          + " -parallel -case " + quoted(scratch_);
-    }
-    else
-    {
-        command = solver_ + " -case " + quoted(scratch_);
-    }
+    const std::string command(copy_->solverCommand(solver_));
+    const std::string why(scratchCase::failure(copy_->execute(command, log), log));
 
-    const int status = execute(command, log);
-
-    if (status || !endedNormally(log))
+    if (scratchCase::interrupted())
+    {
+        FatalErrorInFunction
+            << "Interrupted (signal " << scratchCase::interrupted()
+            << ") during forward run " << runIndex << ": the solver was"
+            << " killed" << exit(FatalError);
+    }
+    if (why.size())
     {
         FatalErrorInFunction
             << "Forward run " << runIndex << " (fire of "
             << duration/fireHistory::hour << " h) failed: " << solver_
-            << " exited with status " << status
-            << (status ? "" : " but without 'End'") << nl
-            << "    command: " << command << nl
+            << ": " << why.c_str() << nl
+            << "    command: " << command.c_str() << nl
             << "    see the log " << log << nl
             << exit(FatalError);
     }
@@ -358,10 +269,10 @@ Foam::scalarField Foam::forwardModel::run
         );
         if
         (
-            execute
+            copy_->execute
             (
                 "reconstructPar -latestTime -fields '(TMax T)' -case "
-              + quoted(scratch_),
+              + scratchCase::quoted(scratch_),
                 reconstructLog
             )
         )

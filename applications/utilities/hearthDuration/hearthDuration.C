@@ -125,21 +125,6 @@ std::string hoursText(const scalar seconds)
     return os.str();
 }
 
-//- Is the executable on the PATH?
-bool onPath(const std::string& exe)
-{
-    std::istringstream path(getEnv("PATH"));
-    std::string dir;
-    while (std::getline(path, dir, ':'))
-    {
-        if (!dir.empty() && isFile(fileName(dir)/exe, false))
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
 //- Stop with an exit status: in OpenFOAM v1912 the status returned by
 //  main is lost (argList's destructor calls Pstream::exit(0))
 void stop(const int status)
@@ -220,6 +205,7 @@ int main(int argc, char *argv[])
     (
         runTime, firePatch, fire, points, solver, nProcs, mpirun, workDir
     );
+    scratchCase::catchInterrupts();
 
     DynamicList<runRecord> runs;
     const auto wallStart = std::chrono::steady_clock::now();

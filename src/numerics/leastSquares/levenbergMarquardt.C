@@ -562,9 +562,25 @@ void levenbergMarquardt::computeStatistics
     res.jacobian = J;
     res.dof = int(m) - n_;
     res.sigma2 = res.dof > 0 ? r.squaredNorm()/res.dof : nan;
+    // Known noise (residuals divided by the true sigma): the covariance is
+    // (J^T J)^-1 and the quantile normal; s^2 should lie in its
+    // chi-square band (chi^2_dof/dof). Unknown: s^2 (J^T J)^-1 and t
+    res.knownSigma = opts_.knownSigma;
     res.tQuantile =
         res.dof > 0
-      ? gsl_cdf_tdist_Pinv(0.5*(1 + opts_.confidence), res.dof)
+      ? (
+            opts_.knownSigma
+          ? gsl_cdf_ugaussian_Pinv(0.5*(1 + opts_.confidence))
+          : gsl_cdf_tdist_Pinv(0.5*(1 + opts_.confidence), res.dof)
+        )
+      : nan;
+    res.sigma2Lower =
+        res.dof > 0
+      ? gsl_cdf_chisq_Pinv(0.5*(1 - opts_.confidence), res.dof)/res.dof
+      : nan;
+    res.sigma2Upper =
+        res.dof > 0
+      ? gsl_cdf_chisq_Pinv(0.5*(1 + opts_.confidence), res.dof)/res.dof
       : nan;
 
     // Scaled Jacobian: sensitivity to a relative change of each parameter
@@ -602,7 +618,8 @@ void levenbergMarquardt::computeStatistics
         const Vector inv2 = res.singularValues.array().square().inverse();
         const Matrix covS = V*inv2.asDiagonal()*V.transpose();
         res.covariance =
-            res.sigma2*(scale.asDiagonal()*covS*scale.asDiagonal());
+            (opts_.knownSigma ? 1.0 : res.sigma2)
+           *(scale.asDiagonal()*covS*scale.asDiagonal());
 
         for (int j = 0; j < n_; ++j)
         {
@@ -613,7 +630,7 @@ void levenbergMarquardt::computeStatistics
         // The correlation of the estimates is that of (J^T J)^-1 whatever
         // s^2 is: from covS when s^2 = 0 (a zero-residual fit: zero
         // covariance, zero-width intervals, and 0/0 here would trap)
-        const bool zeroS2 = !(res.sigma2 > 0);
+        const bool zeroS2 = !(res.sigma2 > 0) && !opts_.knownSigma;
         const Matrix& C = zeroS2 ? covS : res.covariance;
         for (int i = 0; i < n_; ++i)
         {

@@ -1,0 +1,318 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fitForwardRuns.H"
+#include "checkedRead.H"
+#include "casePaths.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+#include <chrono>
+#include <cstdlib>
+#include <unistd.h>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fitForwardRuns::fitForwardRuns
+(
+    const dictionary& fwdDict,
+    const Time& runTime
+)
+:
+    slots_(),
+    decomposeEachRun_(false),
+    csvRel_(),
+    nProcs(1),
+    maxConcurrent(1),
+    runs(0),
+    failedRuns(0),
+    batchWall{0, 0},
+    batchRuns{0, 0}
+{
+    checkedRead::checkKeywords
+    (
+        fwdDict,
+        wordList
+        ({
+            "solver", "nProcs", "mpirun", "maxConcurrentRuns",
+            "functionObject", "workDir"
+        })
+    );
+    solver =
+        fwdDict.lookupOrDefault<fileName>("solver", fileName("ahcFoam")).expand();
+    nProcs = fwdDict.getOrDefault<label>("nProcs", 1);
+    if (nProcs < 1)
+    {
+        FatalIOErrorInFunction(fwdDict)
+            << "forwardModel: nProcs " << nProcs << ": valid is >= 1"
+            << " (1: serial forward runs, N > 1: each run on N MPI ranks)"
+            << exit(FatalIOError);
+    }
+    // Parallel forward runs: each scratch copy is decomposed (decomposePar,
+    // system/decomposeParDict of the case) and run as
+    // '<mpirun> -np N <solver> -parallel -case <copy>'
+    mpirun = scratchCase::launcher
+    (
+        fwdDict, nProcs, runTime.path(), wordList({"decomposePar"})
+    );
+    maxConcurrent =
+        max(1, fwdDict.lookupOrDefault<label>("maxConcurrentRuns", 1));
+    foName = fwdDict.lookupOrDefault<word>("functionObject", "thermocouples");
+    {
+        const dictionary* fos = runTime.controlDict().findDict("functions");
+        if (!fos || !fos->findDict(foName))
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "functionObject " << foName << ": no such entry in the"
+                << " functions of " << runTime.controlDict().name()
+                << " (the thermocouples function object whose"
+                << " sensors.csv holds the simulated histories)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fitForwardRuns::readWorkDir
+(
+    const dictionary& fwdDict,
+    const fileName& casePath,
+    const word& startName,
+    const fileName& writeCasePath
+)
+{
+    workDir =
+        fwdDict.lookupOrDefault<fileName>
+        (
+            "workDir", fileName("postProcessing/hearthFit")
+        ).expand();
+    if (!workDir.isAbsolute()) workDir = casePath/workDir;
+    workDir = casePaths::canonical(workDir);
+
+    // The work folder receives a copy of system, constant and the start
+    // time per concurrent run: inside one of them it would copy itself
+    // (until the path is too long)
+    {
+        const fileName holder
+        (
+            casePaths::copiedDirHolding(casePath, startName, workDir)
+        );
+        if (!holder.empty())
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "Keyword 'workDir' = " << workDir << " lies inside "
+                << holder << ", which is copied into workDir for each"
+                << " forward run: the copy would contain itself. Expected"
+                << " a directory outside the case's system, constant and "
+                << startName << " (default postProcessing/hearthFit)"
+                << exit(FatalIOError);
+        }
+        if (workDir == casePaths::canonical(casePath))
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "Keyword 'workDir' = " << workDir << " is the case"
+                << " itself: its outputs would mix with the case's files."
+                << " Expected a directory of its own (default"
+                << " postProcessing/hearthFit)" << exit(FatalIOError);
+        }
+        if
+        (
+            writeCasePath.size()
+         && (
+                casePaths::inside(writeCasePath, workDir)
+             || casePaths::inside(workDir, writeCasePath)
+            )
+        )
+        {
+            FatalIOErrorInFunction(fwdDict)
+                << "-writeCase " << writeCasePath << " and keyword"
+                << " 'workDir' = " << workDir << " overlap: the scratch"
+                << " copies would be mixed with the written case. Give"
+                << " separate directories" << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::fitForwardRuns::makeCopies
+(
+    const Time& runTime,
+    const fitParameters& params
+)
+{
+    const fileName casePath(runTime.path());
+    const word startName(runTime.timeName());
+    csvRel_ = "postProcessing/" + foName + "/" + startName + "/sensors.csv";
+
+    if
+    (
+        workDir.find('\'') != string::npos
+     || casePath.find('\'') != string::npos
+    )
+    {
+        FatalErrorInFunction << "Quotes in paths are not supported"
+            << exit(FatalError);
+    }
+    mkDir(workDir);
+
+    slots_.setSize(maxConcurrent);
+    forAll(slots_, k)
+    {
+        slots_.set
+        (
+            k,
+            new scratchCase
+            (
+                casePath, startName, runTime.startTime().value(),
+                workDir/word("scratch" + Foam::name(k)), nProcs, mpirun
+            )
+        );
+    }
+
+    // Parallel forward runs: the parameters live in dictionaries, which
+    // the ranks read from the copy itself (system, constant) and the
+    // sensors file too, so a copy is decomposed once (mesh and start-time
+    // fields); only a parameter in a file of the start-time directory
+    // needs a decomposition before every run
+    decomposeEachRun_ = params.inDirectory(startName);
+    if (nProcs > 1)
+    {
+        for (scratchCase& copy : slots_)
+        {
+            if (!copy.decompose())
+            {
+                FatalErrorInFunction << "decomposePar failed on the scratch"
+                    << " copy " << copy.path() << ": see "
+                    << copy.path()/"log.decomposePar" << exit(FatalError);
+            }
+        }
+        Info<< "Scratch copies decomposed for " << nProcs << " ranks"
+            << (decomposeEachRun_ ? " (again before each run: a parameter"
+                " lives in the start-time directory)" : "") << endl;
+    }
+}
+
+
+bool Foam::fitForwardRuns::collect
+(
+    const fileName& dir,
+    const int status,
+    hearthFit::Vector& r,
+    std::string& why,
+    const fitObservations& obs
+) const
+{
+    if (status == -1000)
+    {
+        why = "decomposePar failed (see " + dir/"log.decomposePar" + ")";
+        return false;
+    }
+    why = scratchCase::failure(status, dir/"log.run");
+    if (why.size())
+    {
+        return false;
+    }
+    return obs.residuals(dir/csvRel_, r, why);
+}
+
+
+void Foam::fitForwardRuns::evaluate
+(
+    std::vector<hearthFit::Evaluation>& batch,
+    const fitParameters& params,
+    const fitObservations& obs
+)
+{
+    const auto tBatch = std::chrono::steady_clock::now();
+    for (size_t b0 = 0; b0 < batch.size(); b0 += maxConcurrent)
+    {
+        const size_t b1 =
+            std::min(batch.size(), b0 + size_t(maxConcurrent));
+        std::vector<int> status(b1 - b0, -1);
+        const int decomposeFailed = -1000;
+        // Prepare the copies (serial: OpenFOAM IO)
+        for (size_t b = b0; b < b1; ++b)
+        {
+            scratchCase& copy = slots_[b - b0];
+            copy.removeResults();
+            rm(copy.path()/"log.run");
+            params.write(copy.path(), batch[b].parameters);
+            if (nProcs > 1 && decomposeEachRun_ && !copy.decompose())
+            {
+                status[b - b0] = decomposeFailed;
+            }
+        }
+        // Run concurrently, each in its own process group
+        for (size_t b = b0; b < b1; ++b)
+        {
+            scratchCase& copy = slots_[b - b0];
+            if (status[b - b0] == decomposeFailed) continue;
+            copy.start
+            (
+                copy.solverCommand(solver), copy.path()/"log.run"
+            );
+        }
+        for (size_t b = b0; b < b1; ++b)
+        {
+            if (status[b - b0] == decomposeFailed) continue;
+            status[b - b0] = slots_[b - b0].wait();
+        }
+        // SIGINT/SIGTERM: the runs were killed, not failed
+        if (scratchCase::interrupted())
+        {
+            throw fitInterrupted();
+        }
+        // Collect
+        for (size_t b = b0; b < b1; ++b)
+        {
+            ++runs;
+            std::string why;
+            const fileName& dir = slots_[b - b0].path();
+            batch[b].ok =
+                collect(dir, status[b - b0], batch[b].residuals, why, obs);
+            if (!batch[b].ok)
+            {
+                ++failedRuns;
+                // The reason, then the run's own error message
+                const std::string::size_type eol = why.find('\n');
+                Info<< "    forward run " << runs << " failed ("
+                    << why.substr(0, eol).c_str() << "), parameters";
+                for (label j = 0; j < batch[b].parameters.size(); ++j)
+                {
+                    Info<< ' ' << batch[b].parameters(j);
+                }
+                Info<< "; log kept as "
+                    << workDir/word("failed." + Foam::name(runs)
+                     + ".log") << endl;
+                if (eol != std::string::npos)
+                {
+                    Info<< "    its log says:" << nl
+                        << why.substr(eol + 1).c_str();
+                }
+                cp(dir/"log.run",
+                   workDir/word("failed." + Foam::name(runs) + ".log"));
+            }
+        }
+    }
+    const int kind = batch.size() > 1 ? 0 : 1;
+    batchWall[kind] += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - tBatch
+    ).count();
+    batchRuns[kind] += batch.size();
+}
+
+
+void Foam::fitForwardRuns::clean() const
+{
+    for (const scratchCase& copy : slots_)
+    {
+        copy.clean();
+    }
+}
+
+
+// ************************************************************************* //

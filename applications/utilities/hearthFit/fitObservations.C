@@ -1,0 +1,295 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fitObservations.H"
+#include "numericTable.H"
+#include "checkedRead.H"
+#include "HashTable.H"
+#include "Pair.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+bool Foam::readSensorCsv
+(
+    const std::string& path,
+    sensorHistories& h,
+    std::string& err,
+    const bool observations
+)
+{
+    numericTable::settings s;
+    s.nColumns = -2;
+    s.uniqueNames = true;
+    s.roles = {"a time"};
+    s.collect = !observations;
+    if (observations)
+    {
+        s.orderedColumn = 0;
+        s.what = "the observations file";
+        s.context = "observations of system/hearthFitDict";
+    }
+    else
+    {
+        s.what = "the sensors CSV of the run";
+    }
+    const numericTable table(fileName(path), s);
+
+    if (table.errors().size())
+    {
+        const numericTable::error& e = table.errors()[0];
+        err = path + (e.line > 0 ? " line " + std::to_string(e.line) : "")
+            + ": " + e.message;
+        return false;
+    }
+    if (table.names().size() < 2)
+    {
+        err = path + ": the header needs a time and a sensor column";
+        if (observations)
+        {
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path)
+                << "observations: " << err.c_str() << nl
+                << exit(FatalIOError);
+        }
+        return false;
+    }
+
+    h.names.assign(table.names().begin() + 1, table.names().end());
+    h.values.assign(h.names.size(), std::vector<double>());
+    h.times.clear();
+    forAll(table, rowi)
+    {
+        const double t = table.value(rowi, 0);
+        // Restarted run (not for observations: checked increasing)
+        while (h.times.size() && h.times.back() >= t)
+        {
+            h.times.pop_back();
+            for (auto& v : h.values) v.pop_back();
+        }
+        h.times.push_back(t);
+        for (size_t i = 0; i < h.names.size(); ++i)
+        {
+            h.values[i].push_back(table.value(rowi, i + 1));
+        }
+    }
+    return true;
+}
+
+
+bool Foam::interpolateLinear
+(
+    const std::vector<double>& t,
+    const std::vector<double>& y,
+    const double x,
+    double& v
+)
+{
+    const double tol = 1e-9*std::max(1.0, std::abs(x));
+    if (t.empty() || x < t.front() - tol || x > t.back() + tol) return false;
+    if (t.size() == 1) { v = y[0]; return true; }
+    size_t i = std::upper_bound(t.begin(), t.end(), x) - t.begin();
+    if (i == 0) i = 1;
+    if (i >= t.size()) i = t.size() - 1;
+    const double t0 = t[i - 1], t1 = t[i];
+    const double w = (t1 > t0) ? (x - t0)/(t1 - t0) : 0;
+    v = y[i - 1] + std::min(1.0, std::max(0.0, w))*(y[i] - y[i - 1]);
+    return true;
+}
+
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fitObservations::fitObservations
+(
+    const dictionary& obsDict,
+    const Time& runTime,
+    const label nPar
+)
+:
+    sigmaGiven(false)
+{
+    checkedRead::checkKeywords
+    (
+        obsDict,
+        wordList
+        ({
+            "file", "timeUnit", "timeWindow", "sensors", "sigma", "sigmas",
+            "weights"
+        })
+    );
+    const fileName obsFile(obsDict.get<fileName>("file").expand());
+    path = obsFile.isAbsolute() ? obsFile : runTime.path()/obsFile;
+    {
+        std::string err;
+        if (!readSensorCsv(path, measured, err, true))
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "observations: " << err.c_str() << exit(FatalIOError);
+        }
+    }
+    // The file's time unit (s, min or h; default s): the times, and the
+    // timeWindow, converted to the case's seconds at once
+    const word timeUnit(obsDict.getOrDefault<word>("timeUnit", "s"));
+    const HashTable<scalar> secondsPer({{"s", 1}, {"min", 60}, {"h", 3600}});
+    if (!secondsPer.found(timeUnit))
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "timeUnit " << timeUnit << ": valid units are s, min and h"
+            << exit(FatalIOError);
+    }
+    for (double& t : measured.times)
+    {
+        t *= secondsPer[timeUnit];
+    }
+    // Times in minutes or hours read as seconds would all fall in the first
+    // minutes of the run and be fitted there without a word: unless the
+    // unit is given, observations that end within the first 1/60 of the
+    // run stop the fit
+    const scalar simulated =
+        runTime.endTime().value() - runTime.startTime().value();
+    if
+    (
+        !obsDict.found("timeUnit") && !measured.times.empty()
+     && measured.times.back() - runTime.startTime().value() <= simulated/60
+    )
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "the observations in " << path << " end at t = "
+            << measured.times.back() << " s, within the first 1/60 of the "
+            << simulated << " s simulated: are the file's times in minutes"
+            << " or hours? Give timeUnit min or h (or timeUnit s if they"
+            << " are seconds)" << exit(FatalIOError);
+    }
+    scalar t0 = -GREAT, t1 = GREAT;
+    if (obsDict.found("timeWindow"))
+    {
+        const Pair<scalar> w(obsDict.get<Pair<scalar>>("timeWindow"));
+        t0 = secondsPer[timeUnit]*w.first();
+        t1 = secondsPer[timeUnit]*w.second();
+        if (!(t0 < t1))
+        {
+            FatalIOErrorInFunction(obsDict) << "timeWindow: need start < end"
+                << exit(FatalIOError);
+        }
+    }
+    if (obsDict.found("sensors"))
+    {
+        sensors = obsDict.get<wordList>("sensors");
+    }
+    else
+    {
+        for (const auto& n : measured.names) sensors.append(word(n));
+    }
+    measCol.assign(sensors.size(), -1);
+    sigma.assign(sensors.size(), 1);
+    weight.assign(sensors.size(), 1);
+    sigmaGiven = obsDict.found("sigma") || obsDict.found("sigmas");
+    const scalar sigmaAll = obsDict.lookupOrDefault<scalar>("sigma", 1);
+    const dictionary* sigmasDict = obsDict.findDict("sigmas");
+    const dictionary* weightsDict = obsDict.findDict("weights");
+    // Their keywords are the observed sensors (a misspelt name would
+    // silently keep the default)
+    for (const dictionary* sw : {sigmasDict, weightsDict})
+    {
+        if (sw)
+        {
+            checkedRead::checkKeywords(*sw, sensors, "observed sensors");
+        }
+    }
+    forAll(sensors, si)
+    {
+        for (size_t c = 0; c < measured.names.size(); ++c)
+        {
+            if (measured.names[c] == sensors[si]) measCol[si] = c;
+        }
+        if (measCol[si] < 0)
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "sensor " << sensors[si] << " is not a column of "
+                << path << exit(FatalIOError);
+        }
+        sigma[si] = sigmaAll;
+        if (sigmasDict) sigma[si] =
+            sigmasDict->lookupOrDefault<scalar>(sensors[si], sigmaAll);
+        if (weightsDict) weight[si] =
+            weightsDict->lookupOrDefault<scalar>(sensors[si], 1);
+        if (!(sigma[si] > 0) || !(weight[si] > 0))
+        {
+            FatalIOErrorInFunction(obsDict)
+                << "sensor " << sensors[si] << ": sigma and weight must be"
+                << " > 0" << exit(FatalIOError);
+        }
+    }
+    for (size_t k = 0; k < measured.times.size(); ++k)
+    {
+        if (measured.times[k] >= t0 && measured.times[k] <= t1)
+        {
+            times.push_back(measured.times[k]);
+            rows.push_back(k);
+        }
+    }
+    if (times.size()*sensors.size() <= size_t(nPar))
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "fewer observations (" << times.size()*sensors.size()
+            << ") inside the time window than parameters + 1"
+            << exit(FatalIOError);
+    }
+    const scalar endTime = runTime.endTime().value();
+    if (times.back() > endTime + 1e-9*max(1, mag(endTime))
+     || times.front() < runTime.startTime().value())
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "observation times [" << times.front() << ", "
+            << times.back() << "] outside the simulated window ["
+            << runTime.startTime().value() << ", " << endTime << "]"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fitObservations::residuals
+(
+    const fileName& csv,
+    hearthFit::Vector& r,
+    std::string& why
+) const
+{
+    sensorHistories sim;
+    if (!readSensorCsv(csv, sim, why)) return false;
+    r.resize(times.size()*sensors.size());
+    label n = 0;
+    forAll(sensors, si)
+    {
+        label col = -1;
+        for (size_t c = 0; c < sim.names.size(); ++c)
+        {
+            if (sim.names[c] == sensors[si]) col = c;
+        }
+        if (col < 0)
+        {
+            why = "sensor " + sensors[si] + " not in " + csv;
+            return false;
+        }
+        for (size_t k = 0; k < times.size(); ++k)
+        {
+            double v;
+            if (!interpolateLinear(sim.times, sim.values[col], times[k], v))
+            {
+                why = "simulated times do not cover the observations";
+                return false;
+            }
+            r(n++) = std::sqrt(weight[si])*(v - value(si, k))/sigma[si];
+        }
+    }
+    return true;
+}
+
+
+// ************************************************************************* //

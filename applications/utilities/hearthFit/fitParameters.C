@@ -1,0 +1,373 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fitParameters.H"
+#include "thermocouples.H"
+#include "checkedRead.H"
+#include "scratchCase.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fitParameters::fitParameters
+(
+    const dictionary& parsDict,
+    const fileName& casePath
+)
+{
+    for (const entry& e : parsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(parsDict)
+                << "parameters: '" << e.keyword() << "' is not a dictionary"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        ParameterSpec s;
+        s.name = e.keyword();
+        checkedRead::checkKeywords
+        (
+            d,
+            wordList
+            ({
+                "file", "entry", "scale", "sensor", "component", "initial",
+                "min", "max", "typical", "transform", "initialFrom",
+                "initialFactor"
+            }),
+            "parameter " + s.name
+        );
+        if (d.found("sensor"))
+        {
+            // An offset [m] of a sensor's position along x, y or z
+            if (d.found("file") || d.found("entry") || d.found("scale"))
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": a sensor offset takes"
+                    << " no file, entry or scale" << exit(FatalIOError);
+            }
+            s.sensor = d.get<word>("sensor");
+            const word comp(d.get<word>("component"));
+            if (comp == "x") s.component = 0;
+            else if (comp == "y") s.component = 1;
+            else if (comp == "z") s.component = 2;
+            else
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": component " << comp
+                    << ": valid are x, y, z" << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            s.file = d.get<fileName>("file");
+            s.entry = d.get<fileName>("entry");
+            s.scale = d.lookupOrDefault<scalar>("scale", 1);
+        }
+
+        double factor = 0;
+        if (d.found("initialFrom"))
+        {
+            const word from(d.get<word>("initialFrom"));
+            if (from != "laloyMassard")
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": initialFrom " << from
+                    << ": valid is laloyMassard" << exit(FatalIOError);
+            }
+            factor = d.lookupOrDefault<scalar>("initialFactor", 1);
+            if (!(factor > 0))
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": initialFactor must be"
+                    << " > 0" << exit(FatalIOError);
+            }
+        }
+        initialFactor.push_back(factor);
+
+        hearthFit::FitParameter p;
+        p.name = s.name;
+        p.initial = d.get<scalar>("initial");
+        p.lower = d.get<scalar>("min");
+        p.upper = d.get<scalar>("max");
+        p.typical = d.lookupOrDefault<scalar>("typical", 0);
+        const word tr(d.lookupOrDefault<word>("transform", "linear"));
+        if (tr == "log") p.transform = hearthFit::Transform::log;
+        else if (tr != "linear")
+        {
+            FatalIOErrorInFunction(d)
+                << "transform " << tr << ": valid are linear, log"
+                << exit(FatalIOError);
+        }
+        if (!(p.lower < p.upper) || p.initial < p.lower || p.initial > p.upper)
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": need min < max and initial"
+                << " within [min, max] (min " << p.lower << ", max "
+                << p.upper << ", initial " << p.initial << ")"
+                << exit(FatalIOError);
+        }
+        if (p.initial == 0 && !(p.typical > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": initial 0 needs a typical"
+                << " > 0 (the finite-difference step floor and scale, e.g."
+                << " 1e-3 for a sensor offset in m)" << exit(FatalIOError);
+        }
+        if (p.typical < 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": typical " << p.typical
+                << " < 0" << exit(FatalIOError);
+        }
+        if (s.component >= 0)
+        {
+            specs.push_back(s);
+            pars.push_back(p);
+            continue;
+        }
+
+        if (!caseDicts.found(s.file))
+        {
+            IFstream is(casePath/s.file);
+            if (!is.good())
+            {
+                FatalIOErrorInFunction(d)
+                    << "parameter " << s.name << ": cannot read "
+                    << casePath/s.file << exit(FatalIOError);
+            }
+            dictionary cd(is);
+            cd.remove("FoamFile");
+            caseDicts.insert(s.file, cd);
+        }
+        word key;
+        if (!scratchCase::parentDict(caseDicts[s.file], s.entry, key))
+        {
+            FatalIOErrorInFunction(d)
+                << "parameter " << s.name << ": no keyword path '" << s.entry.c_str()
+                << "' (a non-dictionary entry) in " << casePath/s.file
+                << exit(FatalIOError);
+        }
+        specs.push_back(s);
+        pars.push_back(p);
+    }
+    if (specs.empty())
+    {
+        FatalIOErrorInFunction(parsDict) << "no parameters"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fitParameters::anyOffset() const
+{
+    for (const ParameterSpec& s : specs)
+    {
+        if (s.component >= 0) return true;
+    }
+    return false;
+}
+
+
+bool Foam::fitParameters::inDirectory(const word& dirName) const
+{
+    for (const ParameterSpec& s : specs)
+    {
+        if (s.component < 0 && s.file.components()[0] == dirName)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::fitParameters::readSensorFile
+(
+    const dictionary& foDict,
+    const word& foName,
+    const fileName& casePath,
+    const word& startName,
+    const dictionary& parsDict
+)
+{
+    const std::string raw(foDict.get<string>("file"));
+    std::string rel;
+    auto starts = [&](const std::string& pre)
+    {
+        return raw.compare(0, pre.size(), pre) == 0;
+    };
+    if (starts("<system>/")) rel = "system/" + raw.substr(9);
+    else if (starts("<constant>/")) rel = "constant/" + raw.substr(11);
+    else if (starts("<case>/")) rel = raw.substr(7);
+    else if (raw.find_first_of("<$~") == std::string::npos && !starts("/"))
+    {
+        rel = raw;
+    }
+    fileName relName(rel);
+    relName.clean();
+    const wordList parts(relName.components());
+    if
+    (
+        rel.empty() || relName.find("..") != string::npos
+     || parts.size() < 2
+     || (
+            parts[0] != "system" && parts[0] != "constant"
+         && parts[0] != startName
+        )
+    )
+    {
+        FatalIOErrorInFunction(foDict)
+            << "sensor offsets and first estimate: the sensor file '" << raw.c_str() << "' of the "
+            << foName << " function object must lie in the case's"
+            << " system, constant or " << startName << " directory"
+            << " (given as <system>/..., <constant>/... or relative to"
+            << " the case), the directories copied for each run"
+            << exit(FatalIOError);
+    }
+    sensorFile.rel = relName;
+
+    // The sensors as the thermocouples function object reads them
+    pointField positions;
+    wordList names;
+    labelList sensorLines;
+    labelList errorLines;
+    List<string> errors;
+    functionObjects::thermocouples::readSensorFile
+    (
+        casePath/relName, positions, names, sensorLines, errorLines,
+        errors
+    );
+    if (!errors.empty())
+    {
+        FatalIOErrorInFunction(foDict)
+            << "sensor file " << casePath/relName
+            << (errorLines[0] > 0 ? " line " : "")
+            << (errorLines[0] > 0 ? Foam::name(errorLines[0]) : word())
+            << ": " << errors[0].c_str() << exit(FatalIOError);
+    }
+
+    // Its lines as they are (comments, header), the sensor lines
+    // marked with their sensor, to be rewritten in the copies
+    std::ifstream in(casePath/relName);
+    std::string line;
+    while (std::getline(in, line))
+    {
+        sensorFile.lines.push_back(line);
+        sensorFile.names.push_back(std::string());
+        sensorFile.xyz.push_back(std::array<double, 3>{{0, 0, 0}});
+    }
+    forAll(names, i)
+    {
+        const size_t li = sensorLines[i] - 1;
+        sensorFile.names[li] = names[i];
+        sensorFile.xyz[li] =
+            {{positions[i].x(), positions[i].y(), positions[i].z()}};
+    }
+    for (const ParameterSpec& s : specs)
+    {
+        if (s.component < 0) continue;
+        if
+        (
+            std::find
+            (
+                sensorFile.names.begin(), sensorFile.names.end(),
+                std::string(s.sensor)
+            ) == sensorFile.names.end()
+        )
+        {
+            FatalIOErrorInFunction(parsDict)
+                << "parameter " << s.name << ": sensor " << s.sensor
+                << " is not in the sensors file " << casePath/relName
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::fitParameters::write
+(
+    const fileName& dir,
+    const hearthFit::Vector& p
+) const
+{
+    HashTable<dictionary> dicts(caseDicts);
+    std::vector<std::array<double, 3>> xyz(sensorFile.xyz);
+    for (label j = 0; j < size(); ++j)
+    {
+        if (specs[j].component >= 0)
+        {
+            for (size_t i = 0; i < xyz.size(); ++i)
+            {
+                if (sensorFile.names[i] == std::string(specs[j].sensor))
+                {
+                    xyz[i][specs[j].component] += p(j);
+                }
+            }
+            continue;
+        }
+        word key;
+        dictionary* d =
+            scratchCase::parentDict(dicts[specs[j].file], specs[j].entry, key);
+        d->set(key, specs[j].scale*p(j));
+    }
+    forAllConstIters(dicts, iter)
+    {
+        scratchCase::writeDictionary
+        (
+            dir/iter.key(), iter.val(), "Written by hearthFit (parameters set)"
+        );
+    }
+    if (!sensorFile.rel.empty())
+    {
+        std::ofstream out(dir/sensorFile.rel);
+        out << std::setprecision(17);
+        for (size_t i = 0; i < sensorFile.lines.size(); ++i)
+        {
+            if (sensorFile.names[i].empty())
+            {
+                out << sensorFile.lines[i] << '\n';
+            }
+            else
+            {
+                out << sensorFile.names[i] << ", " << xyz[i][0] << ", "
+                    << xyz[i][1] << ", " << xyz[i][2] << '\n';
+            }
+        }
+    }
+}
+
+
+void Foam::fitParameters::writeCase
+(
+    const fileName& out,
+    const fileName& casePath,
+    const word& startName,
+    const hearthFit::Vector& p
+) const
+{
+    if
+    (
+        !mkDir(out)
+     || !cp(casePath/"system", out)
+     || !cp(casePath/"constant", out)
+     || !cp(casePath/startName, out)
+    )
+    {
+        FatalErrorInFunction << "Cannot write the case copy " << out
+            << exit(FatalError);
+    }
+    write(out, p);
+    Info<< "Best parameters written into the case copy " << out << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,462 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fitReport.H"
+#include "casePaths.H"
+#include "scratchCase.H"
+#include "OSspecific.H"
+
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fitReport::fitReport
+(
+    const fitParameters& params,
+    const fitObservations& obs,
+    const fitForwardRuns& fwd,
+    const fitState& state
+)
+:
+    params_(params),
+    obs_(obs),
+    fwd_(fwd),
+    state_(state),
+    initial0_(),
+    progressCsv_
+    (
+        fwd.workDir/"progress.csv",
+        state.resume ? std::ios::app : std::ios::trunc
+    ),
+    clock0_(std::chrono::steady_clock::now())
+{
+    for (const auto& p : params_.pars) initial0_.push_back(p.initial);
+    progressCsv_ << std::setprecision(8);
+    if (!state_.resume)
+    {
+        progressCsv_ << "iteration,cost";
+        for (const auto& s : params_.specs) progressCsv_ << ',' << s.name;
+        progressCsv_ << ",damping,elapsed_s,runs,event" << std::endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fileName Foam::fitReport::writeCasePath
+(
+    const argList& args,
+    const fileName& casePath,
+    const word& startName
+)
+{
+    fileName writeCasePath;
+    if (args.found("writeCase"))
+    {
+        writeCasePath = casePaths::canonical(args.get<fileName>("writeCase"));
+        const fileName holder
+        (
+            casePaths::copiedDirHolding(casePath, startName, writeCasePath)
+        );
+        if (casePaths::inside(casePath, writeCasePath))
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << " (" << writeCasePath << ") is the case " << casePath
+                << " or contains it: its system, constant and "
+                << startName << " would be overwritten. Give a new"
+                << " directory outside the case" << exit(FatalError);
+        }
+        if (!holder.empty())
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << " (" << writeCasePath << ") lies inside " << holder
+                << ", which is itself copied into it: the copy would"
+                << " contain itself. Give a directory outside the case's"
+                << " system, constant and " << startName << exit(FatalError);
+        }
+        if (exists(writeCasePath) && !args.found("overwrite"))
+        {
+            FatalErrorInFunction
+                << "-writeCase " << args.get<fileName>("writeCase")
+                << ": " << writeCasePath << " exists; its system, constant"
+                << " and " << startName << " would be replaced and its"
+                << " parameter dictionaries rewritten without their"
+                << " comments. Give a new directory, or add -overwrite"
+                << exit(FatalError);
+        }
+    }
+    return writeCasePath;
+}
+
+
+double Foam::fitReport::elapsed() const
+{
+    return state_.elapsedOffset + std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - clock0_
+    ).count();
+}
+
+
+void Foam::fitReport::header(const hearthFit::FitOptions& opts) const
+{
+    Info<< "hearthFit: " << params_.size() << " parameters, " << obs_.sensors.size()
+        << " sensors x " << obs_.times.size() << " times = "
+        << obs_.sensors.size()*obs_.times.size() << " residuals" << nl
+        << "    solver " << fwd_.solver;
+    if (fwd_.nProcs > 1) Info<< " on " << fwd_.nProcs << " ranks (" << fwd_.mpirun << ")";
+    Info<< ", up to " << fwd_.maxConcurrent
+        << " concurrent runs, relative step " << opts.hRel << ", "
+        << (opts.difference == hearthFit::Difference::forward
+            ? "forward" : "central")
+        << " differences" << nl
+        << "    work directory " << fwd_.workDir << nl << nl
+        << "iter  cost          ";
+    {
+        std::ostringstream os;
+        for (const auto& s : params_.specs) os << std::setw(14) << s.name << ' ';
+        Info<< os.str().c_str();
+    }
+    Info<< "damping     elapsed_s  runs  event" << endl;
+}
+
+
+void Foam::fitReport::progress(const hearthFit::FitProgress& pr)
+{
+    const double el = elapsed();
+    const int iteration = pr.iteration + state_.iterOffset;
+    const bool resumedLine = state_.resume && pr.iteration == 0;
+    std::ostringstream os;
+    os  << std::setw(4) << iteration << "  "
+        << std::setw(12) << std::setprecision(6) << pr.cost << "  ";
+    for (label j = 0; j < params_.size(); ++j)
+    {
+        os << std::setw(14) << std::setprecision(8)
+           << pr.parameters(j) << ' ';
+    }
+    os  << std::setw(10) << std::setprecision(3) << pr.damping << "  "
+        << std::setw(9) << std::fixed << std::setprecision(1) << el
+        << "  " << std::setw(4) << fwd_.runs << "  "
+        << (resumedLine ? std::string("resumed") : pr.event);
+    if (pr.rejected)
+    {
+        os << " (" << pr.rejected << " trial step"
+           << (pr.rejected > 1 ? "s" : "") << " rejected)";
+    }
+    Info<< os.str().c_str() << endl;
+
+    if (resumedLine) return;    // its line is already written
+    progressCsv_ << iteration << ',' << pr.cost;
+    for (label j = 0; j < params_.size(); ++j) progressCsv_ << ',' << pr.parameters(j);
+    progressCsv_ << ',' << pr.damping << ',' << el << ',' << fwd_.runs
+        << ",\"" << pr.event << '"' << std::endl;
+}
+
+
+void Foam::fitReport::write
+(
+    const hearthFit::FitResult& res,
+    const hearthFit::FitOptions& opts
+) const
+{
+    // ---- Report
+    std::ostringstream rep;
+    rep << std::setprecision(8);
+    rep << "hearthFit report" << "\n"
+        << "status: " << hearthFit::statusName(res.status)
+        << (res.converged ? " (converged)" : " (NOT converged)") << ": "
+        << res.message << "\n"
+        << "iterations " << res.iterations + state_.iterOffset
+        << (state_.resume ? " (resumed)" : "") << ", forward runs " << fwd_.runs
+        << " (" << fwd_.failedRuns << " failed), elapsed "
+        << std::fixed << std::setprecision(1) << elapsed() << " s\n"
+        << "wall time in forward runs" << (state_.resume ? " (since resumed)" : "")
+        << ": " << fwd_.batchWall[0] << " s for " << fwd_.batchRuns[0]
+        << " runs in batches (Jacobians, up to " << fwd_.maxConcurrent
+        << " at once), " << fwd_.batchWall[1] << " s for " << fwd_.batchRuns[1]
+        << " single runs (trial steps)\n";
+    rep.unsetf(std::ios::floatfield);
+    rep << std::setprecision(8)
+        << "cost (weighted residual sum of squares) " << res.cost
+        << ", residuals " << res.residuals.size() << ", dof " << res.dof
+        << ", s^2 " << res.sigma2 << "\n";
+    if (res.knownSigma && res.dof > 0)
+    {
+        const int pc = int(std::round(100*opts.confidence));
+        rep << "sigma given: intervals from it (normal quantile "
+            << res.tQuantile << "), not scaled by s^2; with the right sigma"
+            << " s^2 lies in [" << res.sigma2Lower << ", " << res.sigma2Upper
+            << "] (" << pc << " % chi-square band, dof " << res.dof << ")\n";
+        if (!(res.sigma2 >= res.sigma2Lower && res.sigma2 <= res.sigma2Upper))
+        {
+            std::ostringstream w;
+            w << std::setprecision(4) << "WARNING: s^2 = " << res.sigma2
+              << " is outside its " << pc << " % chi-square band ["
+              << res.sigma2Lower << ", " << res.sigma2Upper << "]: "
+              << (
+                    res.sigma2 > res.sigma2Upper
+                  ? "model error (the model cannot reproduce the data:"
+                    " discretisation, physics, fixed parameters) or a sigma"
+                    " too small"
+                  : "a sigma too large (or data fitted by the model itself)"
+                 )
+              << "; the residuals say a noise of " << std::sqrt(res.sigma2)
+              << " x the given sigma. The intervals assume the given"
+              << " sigma\n";
+            rep << w.str();
+            WarningInFunction << w.str().c_str() << endl;
+        }
+    }
+    else if (res.dof > 0)
+    {
+        rep << "sigma not given: intervals scaled by s^2 (t quantile "
+            << res.tQuantile << ")\n";
+    }
+    if (res.dof > 0 && res.sigma2 == 0 && !res.knownSigma)
+    {
+        rep << "s^2 = 0: the model reproduces every observation exactly"
+            << " (noise-free data made by the model itself?): the standard"
+            << " errors are 0 and the intervals have zero width (they"
+            << " measure the noise, and there is none); the correlation"
+            << " matrix is that of (J^T J)^-1\n";
+    }
+    rep << "\n";
+    const int pct = int(std::round(100*opts.confidence));
+    rep << std::setprecision(10) << std::left << std::setw(12) << "parameter" << std::right
+        << std::setw(18) << "estimate" << std::setw(18) << "std error"
+        << std::setw(18) << ("lower " + std::to_string(pct) + "%")
+        << std::setw(18) << ("upper " + std::to_string(pct) + "%")
+        << std::setw(18) << "initial" << "\n";
+    for (label j = 0; j < params_.size(); ++j)
+    {
+        auto val = [](const hearthFit::Vector& v, label j)
+        {
+            return v.size() > j ? v(j) : std::nan("");
+        };
+        rep << std::left << std::setw(12) << params_.specs[j].name.c_str()
+            << std::right
+            << std::setw(18) << res.parameters(j)
+            << std::setw(18) << val(res.standardErrors, j)
+            << std::setw(18) << val(res.lowerConfidence, j)
+            << std::setw(18) << val(res.upperConfidence, j)
+            << std::setw(18) << initial0_[j]
+            << ((res.atBound.size() > size_t(j) && res.atBound[j])
+                ? "  at bound" : "")
+            << "\n";
+    }
+    rep << "\ncorrelation matrix\n";
+    for (label i = 0; i < params_.size(); ++i)
+    {
+        rep << std::left << std::setw(12) << params_.specs[i].name.c_str() << std::right;
+        for (label j = 0; j < params_.size(); ++j)
+        {
+            rep << std::setw(12) << std::setprecision(4)
+                << (res.correlation.rows() > i ? res.correlation(i, j)
+                                                : std::nan(""));
+        }
+        rep << "\n";
+    }
+    rep << std::setprecision(6)
+        << "\nsingular values of the scaled Jacobian J diag(|p|):";
+    for (label j = 0; j < res.singularValues.size(); ++j)
+    {
+        rep << ' ' << res.singularValues(j);
+    }
+    rep << "\n\nRMS residual per sensor [C]\n";
+
+    // Fitted histories from the residuals at the best parameters
+    std::vector<std::vector<double>> fitted
+    (
+        obs_.sensors.size(), std::vector<double>(obs_.times.size(), std::nan(""))
+    );
+    const bool haveRes =
+        res.residuals.size() == label(obs_.times.size()*obs_.sensors.size());
+    forAll(obs_.sensors, si)
+    {
+        double ss = 0;
+        for (size_t k = 0; k < obs_.times.size(); ++k)
+        {
+            const double m = obs_.measured.values[obs_.measCol[si]][obs_.rows[k]];
+            if (haveRes)
+            {
+                const double r =
+                    res.residuals(si*obs_.times.size() + k)
+                   *obs_.sigma[si]/std::sqrt(obs_.weight[si]);
+                fitted[si][k] = m + r;
+                ss += r*r;
+            }
+        }
+        rep << "    " << std::left << std::setw(12) << obs_.sensors[si].c_str()
+            << std::right << std::setw(14)
+            << (haveRes ? std::sqrt(ss/obs_.times.size()) : std::nan(""))
+            << "\n";
+    }
+
+    Info<< nl << rep.str().c_str() << endl;
+    {
+        std::ofstream os(fwd_.workDir/"report.txt");
+        os << rep.str();
+    }
+    {
+        std::ofstream os(fwd_.workDir/"fitted.csv");
+        os << std::setprecision(10) << "time_s";
+        for (const word& s : obs_.sensors) os << ',' << s << "_measured," << s << "_fitted";
+        os << "\n";
+        for (size_t k = 0; k < obs_.times.size(); ++k)
+        {
+            os << obs_.times[k];
+            forAll(obs_.sensors, si)
+            {
+                os << ',' << obs_.measured.values[obs_.measCol[si]][obs_.rows[k]]
+                   << ',' << fitted[si][k];
+            }
+            os << "\n";
+        }
+    }
+    {
+        std::ofstream os(fwd_.workDir/"parameters.csv");
+        os << std::setprecision(12)
+           << "name,estimate,std_error,lower,upper\n";
+        for (label j = 0; j < params_.size(); ++j)
+        {
+            os << params_.specs[j].name << ',' << res.parameters(j) << ','
+               << (res.standardErrors.size() > j ? res.standardErrors(j) : std::nan("")) << ','
+               << (res.lowerConfidence.size() > j ? res.lowerConfidence(j) : std::nan("")) << ','
+               << (res.upperConfidence.size() > j ? res.upperConfidence(j) : std::nan(""))
+               << "\n";
+        }
+    }
+    Info<< "Written " << fwd_.workDir/"report.txt" << ", "
+        << fwd_.workDir/"fitted.csv" << ", " << fwd_.workDir/"parameters.csv" << ", "
+        << fwd_.workDir/"progress.csv" << endl;
+
+    // Scaled sensitivities p_j dT/dp_j [C] from the final Jacobian
+    // (dr/dp with r = sqrt(w)(T - m)/sigma: dT/dp = J sigma/sqrt(w))
+    const bool haveJac =
+        res.jacobian.rows() == label(obs_.times.size()*obs_.sensors.size())
+     && res.jacobian.cols() == params_.size()
+     && res.parameters.size() == params_.size();
+    if (haveJac)
+    {
+        std::ofstream os(fwd_.workDir/"sensitivities.csv");
+        os << std::setprecision(10) << "time_s";
+        for (const word& s : obs_.sensors)
+        {
+            for (const auto& sp : params_.specs) os << ',' << s << '_' << sp.name;
+        }
+        os << "\n";
+        for (size_t k = 0; k < obs_.times.size(); ++k)
+        {
+            os << obs_.times[k];
+            forAll(obs_.sensors, si)
+            {
+                for (label j = 0; j < params_.size(); ++j)
+                {
+                    os << ','
+                       << res.jacobian(si*obs_.times.size() + k, j)
+                         *obs_.sigma[si]/std::sqrt(obs_.weight[si])
+                         *res.parameters(j);
+                }
+            }
+            os << "\n";
+        }
+        Info<< "Written " << fwd_.workDir/"sensitivities.csv" << endl;
+    }
+    else
+    {
+        WarningInFunction
+            << "No final Jacobian: sensitivities.csv/png not written" << endl;
+    }
+
+    // Plots with gnuplot (fitted.png, sensitivities.png); a missing
+    // gnuplot or a failing plot is a warning only
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    {
+        WarningInFunction
+            << "gnuplot not found: fitted.png and sensitivities.png not"
+            << " written" << endl;
+    }
+    else
+    {
+        std::ofstream gp(fwd_.workDir/"plots.gp");
+        gp  << "set datafile separator ','\n"
+            << "set key outside right\n"
+            << "set grid\n"
+            << "set xlabel 'time [h]'\n"
+            << "set terminal pngcairo noenhanced size 1000,650\n"
+            << "set output 'fitted.png'\n"
+            << "set title 'hearthFit: measured (points) and fitted (lines)'\n"
+            << "set ylabel 'T [C]'\n"
+            << "plot ";
+        forAll(obs_.sensors, si)
+        {
+            gp  << (si ? ", \\\n     " : "")
+                << "'fitted.csv' every ::1 using ($1/3600):" << 2 + 2*si
+                << " with points pt 7 ps 0.5 lc " << si + 1
+                << " title '" << obs_.sensors[si] << " measured', "
+                << "'' every ::1 using ($1/3600):" << 3 + 2*si
+                << " with lines lw 2 lc " << si + 1
+                << " title '" << obs_.sensors[si] << " fitted'";
+        }
+        gp  << "\nunset output\n";
+        if (haveJac)
+        {
+            gp  << "set output 'sensitivities.png'\n"
+                << "set title 'scaled sensitivities p_j dT/dp_j'\n"
+                << "set ylabel 'p dT/dp [C]'\n"
+                << "plot ";
+            label col = 2;
+            const char* dts[] = {"1", "2", "3", "4", "5"};
+            bool first = true;
+            forAll(obs_.sensors, si)
+            {
+                for (label j = 0; j < params_.size(); ++j, ++col)
+                {
+                    // Curves identically zero (the offset of another
+                    // sensor) are left out of the plot (not of the CSV)
+                    bool zero = true;
+                    for (size_t k = 0; zero && k < obs_.times.size(); ++k)
+                    {
+                        zero = res.jacobian(si*obs_.times.size() + k, j) == 0;
+                    }
+                    if (zero) continue;
+                    gp  << (!first ? ", \\\n     " : "")
+                        << (!first ? "''" : "'sensitivities.csv'")
+                        << " every ::1 using ($1/3600):" << col
+                        << " with lines lw 2 lc " << j + 1
+                        << " dt " << dts[si % 5]
+                        << " title '" << obs_.sensors[si] << " "
+                        << params_.specs[j].name << "'";
+                    first = false;
+                }
+            }
+            gp  << "\nunset output\n";
+        }
+        gp.close();
+        const std::string cmd
+        (
+            "cd " + scratchCase::quoted(fwd_.workDir) + " && gnuplot plots.gp > plots.log 2>&1"
+        );
+        if (std::system(cmd.c_str()) != 0)
+        {
+            WarningInFunction
+                << "gnuplot failed (see " << fwd_.workDir/"plots.log" << ")"
+                << endl;
+        }
+        else
+        {
+            Info<< "Written " << fwd_.workDir/"fitted.png";
+            if (haveJac) Info<< ", " << fwd_.workDir/"sensitivities.png";
+            Info<< endl;
+        }
+    }
+}
+
+
+// ************************************************************************* //
