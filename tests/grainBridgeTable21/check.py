@@ -5,7 +5,9 @@ stable bridge (the minimum of V(r0), integrated profiles).
 
 Tolerance 3 % relative: the six rows agree within -1.1 % to +2.2 %
 (theta 30: +2.2 % and +0.4 %, tests/grainBridge; this test: -1.1, +0.6,
-+1.75, +1.2 %), our integration is converged to 1e-6 (ds halved), so the
++1.75, +1.2 %), our integration is converged to 1e-6 (ds halved: the
+smallest stable bridge of eps 0.1 theta 10 and eps 0.05 theta 45 moved
+by less than 1e-9 in alpha_l, measured once), so the
 spread is Mansour's (he shot by trial and error on a family of
 curvatures). A liquid fraction normalised otherwise (e.g. by the whole
 cell, 2.5 times the void at eps 0.1) would move every row by the same
