@@ -157,28 +157,58 @@ def _theta(start, kappa, eps, ds):
 def shoot(start, theta, eps, kmin=-40.0, kmax=40.0, n=161, ds=2e-3):
     """kappa giving the contact angle theta [rad] from start (r, z, beta):
     scan [kmin, kmax] for a sign change of theta(kappa) - theta, then
-    bisect. None if there is no such kappa."""
-    ks = [kmin + (kmax - kmin)*i/(n - 1) for i in range(n)]
-    prev = None
-    for k in ks:
+    bisect. Where the scan passes from curvatures whose curve reaches the
+    sphere to curvatures whose curve does not (it turns horizontal first:
+    small contact angles), the last curvature that reaches it is found by
+    bisection and enters the scan, so that a root between it and the scan
+    point is not missed. None if there is no such kappa."""
+    def g(k):
         t = _theta(start, k, eps, ds)
-        g = None if t is None else t - theta
-        if g is not None and prev is not None and prev[1]*g <= 0:
-            a, ga = prev
-            b = k
-            for _ in range(60):
-                m = 0.5*(a + b)
-                tm = _theta(start, m, eps, ds)
-                if tm is None:
-                    b = m
-                    continue
-                gm = tm - theta
-                if ga*gm <= 0:
-                    b = m
-                else:
-                    a, ga = m, gm
-            return 0.5*(a + b)
-        prev = (k, g) if g is not None else None
+        return None if t is None else t - theta
+
+    def edge(a, b):
+        # a reaches the sphere, b does not: the reaching end next to b
+        # (to 2^-30 of the scan step)
+        for _ in range(30):
+            m = 0.5*(a + b)
+            if g(m) is None:
+                b = m
+            else:
+                a = m
+        return a
+
+    ks = [kmin + (kmax - kmin)*i/(n - 1) for i in range(n)]
+    prev, prevK = None, None
+    for k in ks:
+        gk = g(k)
+        pts = []
+        if gk is None and prev is not None:
+            e = edge(prev[0], k)
+            pts = [(e, g(e))]
+        elif gk is not None and prev is None and prevK is not None:
+            e = edge(k, prevK)
+            prev = (e, g(e))
+        if gk is not None:
+            pts.append((k, gk))
+        for kk, gg in pts:
+            if prev is not None and prev[1]*gg <= 0:
+                a, ga = prev
+                b = kk
+                for _ in range(60):
+                    m = 0.5*(a + b)
+                    gm = g(m)
+                    if gm is None:
+                        b = m
+                        continue
+                    if ga*gm <= 0:
+                        b = m
+                    else:
+                        a, ga = m, gm
+                return 0.5*(a + b)
+            prev = (kk, gg)
+        if gk is None:
+            prev = None
+        prevK = k
     return None
 
 
