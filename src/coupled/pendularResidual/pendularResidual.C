@@ -52,7 +52,14 @@ Foam::pendularResidual::pendularResidual
     forAll(fvMesh_.boundary(), patchi)
     {
         const fvPatch& patch = fvMesh_.boundary()[patchi];
-        if (patch.coupled() || polyPatch::constraintType(patch.type()))
+        if (patch.coupled())
+        {
+            FatalErrorInFunction
+                << "pendularResidual: coupled patch " << patch.name()
+                << " (" << patch.type() << ") not supported: serial runs"
+                << " without cyclic patches only" << exit(FatalError);
+        }
+        if (polyPatch::constraintType(patch.type()))
         {
             continue;
         }
@@ -280,15 +287,10 @@ void Foam::pendularResidual::faceFlux
         return;
     }
 
-    // A coupled patch: the state across from its cell's unknowns; its
-    // porosity is taken as the owner's (no porosity across processor
-    // patches here: serial use only so far)
-    label patchi, i;
-    patchFace(facei, patchi, i);
+    // Coupled patches are refused by the constructor
     FatalErrorInFunction
-        << "pendularResidual: coupled patch "
-        << fvMesh_.boundary()[patchi].name()
-        << " not supported (serial, no cyclics)" << exit(FatalError);
+        << "pendularResidual: face " << facei << " of a coupled patch"
+        << exit(FatalError);
 }
 
 
