@@ -1,0 +1,361 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "pendularResidual.H"
+#include "surfaceFields.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pendularResidual::pendularResidual
+(
+    const pendularMedium& medium,
+    const volScalarField& T,
+    const volScalarField& p,
+    const volScalarField& pw,
+    const scalar pRef,
+    const scalarField& x0,
+    const scalarField& alphaGuess,
+    const scalar dt,
+    const differenceScheme scheme
+)
+:
+    coupledResidual
+    (
+        T.mesh(), 3,
+        // T [K], p_g - p_ref [Pa], W [kg/m3]: the scales of the steps
+        // where |x| is smaller (a dry cell holds ~1e-3 kg/m3 of vapour)
+        scalarField({300.0, 1.0, 1e-4}),
+        scheme
+    ),
+    fvMesh_(T.mesh()),
+    medium_(medium),
+    T_(T),
+    p_(p),
+    pw_(pw),
+    pRef_(pRef),
+    kind_(fvMesh_.boundary().size(), patchKind::other),
+    dt_(dt),
+    W0_(fvMesh_.nCells()),
+    A0_(fvMesh_.nCells()),
+    E0_(fvMesh_.nCells()),
+    alphaGuess_(alphaGuess)
+{
+    if (medium_.nonEquilibrium())
+    {
+        FatalErrorInFunction
+            << "pendularResidual: model A only (local equilibrium); the"
+            << " medium is of model B (nonEquilibrium)" << exit(FatalError);
+    }
+
+    // The patch kinds of pendularFoam's createFields.H
+    forAll(fvMesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = fvMesh_.boundary()[patchi];
+        if (patch.coupled())
+        {
+            FatalErrorInFunction
+                << "pendularResidual: coupled patch " << patch.name()
+                << " (" << patch.type() << ") not supported: serial runs"
+                << " without cyclic patches only" << exit(FatalError);
+        }
+        if (polyPatch::constraintType(patch.type()))
+        {
+            continue;
+        }
+        const bool pFixed = p_.boundaryField()[patchi].fixesValue();
+        const bool pwFixed = pw_.boundaryField()[patchi].fixesValue();
+        if (pFixed && pwFixed)
+        {
+            kind_[patchi] = patchKind::open;
+        }
+        else if (pwFixed)
+        {
+            kind_[patchi] = patchKind::semiPermeable;
+        }
+        else if (!pFixed)
+        {
+            kind_[patchi] = patchKind::impermeable;
+        }
+        else
+        {
+            FatalErrorInFunction
+                << "Patch " << patch.name() << ": p is fixed but pw is free"
+                << exit(FatalError);
+        }
+    }
+
+    forAll(W0_, celli)
+    {
+        const cellState s = state(celli, &x0[3*celli]);
+        W0_[celli] = s.W;
+        A0_[celli] = s.A;
+        E0_[celli] = s.E;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField> Foam::pendularResidual::pack
+(
+    const scalarField& T,
+    const scalarField& p,
+    const scalarField& W,
+    const scalar pRef
+)
+{
+    tmp<scalarField> tx(new scalarField(3*T.size()));
+    scalarField& x = tx.ref();
+    forAll(T, c)
+    {
+        x[3*c] = T[c];
+        x[3*c + 1] = p[c] - pRef;
+        x[3*c + 2] = W[c];
+    }
+    return tx;
+}
+
+
+Foam::pendularResidual::cellState Foam::pendularResidual::state
+(
+    const label celli,
+    const scalar* x
+) const
+{
+    // updateState.H, model A
+    const scalar phi = medium_.porosity()[celli];
+    cellState s;
+    s.T = x[0];
+    s.p = x[1] + pRef_;
+    s.W = x[2];
+    const pendularMedium::saturationState sat = medium_.saturation(s.T);
+    s.alpha = medium_.alphaL(s.W, sat, phi, alphaGuess_[celli]);
+    s.rhoW = medium_.vapourDensity(s.W, s.alpha, sat, phi);
+    const scalar R = medium_.R();
+    const scalar pw = s.rhoW*R*s.T/medium_.Mw();
+    const scalar pa = s.p - pw;
+    s.rhoA = medium_.Ma()*pa/(R*s.T);
+    s.rhoG = s.rhoW + s.rhoA;
+    s.omega = s.rhoW/s.rhoG;
+    s.Kg = medium_.Kg(s.alpha, phi);
+    s.kappa = medium_.kappa(s.alpha, phi);
+    s.hW = medium_.vapourEnthalpy(s.T);
+    s.hA = medium_.airEnthalpy(s.T);
+    s.E = medium_.energy(s.T, s.W, s.alpha, s.rhoW, pa, phi);
+    s.A = phi*(1 - s.alpha)*s.rhoA;
+    return s;
+}
+
+
+Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
+(
+    const label patchi,
+    const label i,
+    const cellState& c
+) const
+{
+    // updateState.H: T, p, pw from their conditions (the cell's where not
+    // fixed), the densities and enthalpies from those; K_g and k_e
+    // zeroGradient
+    const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+    const fvPatchScalarField& pp = p_.boundaryField()[patchi];
+    const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
+    const scalar R = medium_.R();
+    const scalar pwc = c.rhoW*R*c.T/medium_.Mw();
+
+    cellState b(c);
+    b.T = Tp.fixesValue() ? Tp[i] : c.T;
+    b.p = pp.fixesValue() ? pp[i] : c.p;
+    const scalar pw = pwp.fixesValue() ? pwp[i] : pwc;
+    b.rhoW = medium_.Mw()*pw/(R*b.T);
+    b.rhoA = medium_.Ma()*(b.p - pw)/(R*b.T);
+    b.rhoG = b.rhoW + b.rhoA;
+    b.omega = b.rhoW/b.rhoG;
+    b.hW = medium_.vapourEnthalpy(b.T);
+    b.hA = medium_.airEnthalpy(b.T);
+    return b;
+}
+
+
+void Foam::pendularResidual::patchFace
+(
+    const label facei,
+    label& patchi,
+    label& i
+) const
+{
+    patchi = fvMesh_.boundaryMesh().whichPatch(facei);
+    i = facei - fvMesh_.boundaryMesh()[patchi].start();
+}
+
+
+void Foam::pendularResidual::flux
+(
+    const cellState& o,
+    const cellState& n,
+    const scalar magSf,
+    const scalar w,
+    const scalar dc,
+    scalar* F
+) const
+{
+    // fluxes.H: linear interpolation (owner weight w), upwind carried
+    // values (owner where the flux is >= 0)
+    const scalar KgByMu =
+        (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity();
+    const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
+    const scalar j =
+        -medium_.vapourDiffusivity()*(w*o.rhoG + (1 - w)*n.rhoG)
+        *(n.omega - o.omega)*dc*magSf;
+    const scalar Fw = (q >= 0 ? o.rhoW : n.rhoW)*q + j;
+    const scalar Fa = (q >= 0 ? o.rhoA : n.rhoA)*q - j;
+    F[0] = Fw;
+    F[1] = Fa;
+    F[2] =
+        -(w*o.kappa + (1 - w)*n.kappa)*(n.T - o.T)*dc*magSf
+      + Fa*(Fa >= 0 ? o.hA : n.hA)
+      + Fw*(Fw >= 0 ? o.hW : n.hW);
+}
+
+
+void Foam::pendularResidual::scales
+(
+    const scalarField& x,
+    scalarField& water,
+    scalarField& gas,
+    scalarField& energy
+) const
+{
+    const label n = fvMesh_.nCells();
+    water.setSize(n);
+    gas.setSize(n);
+    energy.setSize(n);
+    const scalarField& V = fvMesh_.V();
+    forAll(water, celli)
+    {
+        const scalar phi = medium_.porosity()[celli];
+        const cellState s = state(celli, &x[3*celli]);
+        const scalar pa =
+            s.p - s.rhoW*medium_.R()*s.T/medium_.Mw();
+        water[celli] = V[celli]/dt_;
+        gas[celli] =
+            V[celli]*phi*(1 - s.alpha)*medium_.Ma()
+           /(medium_.R()*s.T*dt_);
+        energy[celli] =
+            V[celli]
+           *medium_.energyCapacity
+            (
+                medium_.saturation(s.T), s.W, s.alpha, pa, phi
+            )/dt_;
+    }
+}
+
+
+void Foam::pendularResidual::cellTerm
+(
+    const label celli,
+    const scalar* x,
+    scalar* S
+) const
+{
+    const cellState s = state(celli, x);
+    const scalar VByDt = fvMesh_.V()[celli]/dt_;
+    S[0] = VByDt*(s.W - W0_[celli]);
+    S[1] = VByDt*(s.A - A0_[celli]);
+    S[2] = VByDt*(s.E - E0_[celli]);
+}
+
+
+void Foam::pendularResidual::faceFlux
+(
+    const label facei,
+    const scalar* xOwn,
+    const scalar* xNei,
+    scalar* F
+) const
+{
+    const cellState o = state(fvMesh_.faceOwner()[facei], xOwn);
+    if (facei < fvMesh_.nInternalFaces())
+    {
+        const cellState n = state(fvMesh_.faceNeighbour()[facei], xNei);
+        flux
+        (
+            o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
+            fvMesh_.nonOrthDeltaCoeffs()[facei], F
+        );
+        return;
+    }
+
+    // Coupled patches are refused by the constructor
+    FatalErrorInFunction
+        << "pendularResidual: face " << facei << " of a coupled patch"
+        << exit(FatalError);
+}
+
+
+void Foam::pendularResidual::boundaryFlux
+(
+    const label facei,
+    const scalar* xOwn,
+    scalar* F
+) const
+{
+    label patchi, i;
+    patchFace(facei, patchi, i);
+    const fvPatch& patch = fvMesh_.boundary()[patchi];
+    const cellState c = state(fvMesh_.faceOwner()[facei], xOwn);
+    const cellState b = boundaryState(patchi, i, c);
+    const scalar magSf = patch.magSf()[i];
+    const scalar dc = patch.deltaCoeffs()[i];
+    const scalar conduction = -c.kappa*(b.T - c.T)*dc*magSf;
+
+    switch (kind_[patchi])
+    {
+        case patchKind::open:
+        {
+            // Outflow carries the cell's values (q > 0), inflow the
+            // atmosphere's
+            const scalar q = -c.Kg/medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
+            const scalar j =
+                -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
+                *dc*magSf;
+            const scalar Fw = (q > 0 ? c.rhoW : b.rhoW)*q + j;
+            const scalar Fa = (q > 0 ? c.rhoA : b.rhoA)*q - j;
+            F[0] = Fw;
+            F[1] = Fa;
+            F[2] =
+                conduction
+              + Fa*(Fa > 0 ? c.hA : b.hA)
+              + Fw*(Fw > 0 ? c.hW : b.hW);
+            break;
+        }
+        case patchKind::semiPermeable:
+        {
+            // No air: the vapour diffuses with its Stefan flow,
+            // F_w = j rho_g/rho_a (bounded by 100), upwind of j
+            const scalar j =
+                -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
+                *dc*magSf;
+            const bool out = j > 0;
+            const scalar rhoAf = out ? c.rhoA : b.rhoA;
+            const scalar rhoGf = out ? c.rhoG : b.rhoG;
+            const scalar stefan =
+                min(rhoGf/max(rhoAf, SMALL*rhoGf), scalar(100));
+            F[0] = j*stefan;
+            F[1] = 0;
+            F[2] = conduction + F[0]*(out ? c.hW : b.hW);
+            break;
+        }
+        default:
+        {
+            // Impermeable and constraint patches: conduction only
+            F[0] = 0;
+            F[1] = 0;
+            F[2] = conduction;
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,428 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    testPendularResidual
+
+Description
+    pendularResidual (src/coupled: pendularFoam's discrete balances as a
+    coupledResidual) against pendularFoam's step. The case holds the old
+    state (time 0) and pendularFoam's converged state after one step (the
+    latest time):
+
+    1. consistency: the residual at pendularFoam's state, old time its
+       initial fields, per cell and balance, scaled by the storage
+       (V/dt for water, the gas capacity for p_g, V C/dt for T) against
+       the segregated solver's tolerances (WTol WScale, pTol, TTol of
+       fvSolution's 'nonlinear'); and with one term perturbed (the Stefan
+       factor of the semi-permeable patch, the enthalpy carried through
+       the internal faces) above them;
+    2. the Jacobian by face-by-face central differences (coupledResidual)
+       against a central difference of the full residual, every column,
+       1e-6 of the column's largest entry;
+    3. Newton (blockSystem, LU, no line search) from the old state: pure
+       Newton cycles (the drying cells' water overshoots below zero: a wet
+       cell's vapour does not depend on W), printed; with pendularFoam's
+       chop (a drying cell keeps a tenth of its water) it reaches the
+       round-off floor (0.1 tolerance) in at most 15 iterations, at order
+       >= 1.8 at the last step above the floor, and the solution equals
+       pendularFoam's within its tolerances (TTol, pTol, WTol WScale).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "petscSession.H"
+#include "blockSystem.H"
+#include "pendularResidual.H"
+#include "unitChecks.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A plausible wrong discretisation: one term changed
+class perturbedResidual
+:
+    public pendularResidual
+{
+public:
+
+    enum class term { stefan, enthalpy };
+
+    term term_;
+
+    template<class... Args>
+    perturbedResidual(const term t, Args&&... args)
+    :
+        pendularResidual(std::forward<Args>(args)...),
+        term_(t)
+    {}
+
+    virtual void faceFlux
+    (
+        const label facei,
+        const scalar* xOwn,
+        const scalar* xNei,
+        scalar* F
+    ) const
+    {
+        pendularResidual::faceFlux(facei, xOwn, xNei, F);
+        if (term_ == term::enthalpy)
+        {
+            // conduction only: the enthalpy of the gas left out
+            const scalar dc = mesh().nonOrthDeltaCoeffs()[facei];
+            const scalar w = mesh().weights()[facei];
+            const cellState o = state(mesh().faceOwner()[facei], xOwn);
+            const cellState n = state(mesh().faceNeighbour()[facei], xNei);
+            F[2] =
+               -(w*o.kappa + (1 - w)*n.kappa)*(n.T - o.T)*dc
+               *mesh().magSf()[facei];
+        }
+    }
+
+    virtual void boundaryFlux
+    (
+        const label facei,
+        const scalar* xOwn,
+        scalar* F
+    ) const
+    {
+        pendularResidual::boundaryFlux(facei, xOwn, F);
+        const label patchi = mesh().boundaryMesh().whichPatch(facei);
+        if
+        (
+            term_ == term::stefan
+         && kinds()[patchi] == patchKind::semiPermeable
+        )
+        {
+            // F_w = j: the Stefan flow of the vapour left out
+            const label i = facei - mesh().boundaryMesh()[patchi].start();
+            const cellState c = state(mesh().faceOwner()[facei], xOwn);
+            const cellState b = boundaryState(patchi, i, c);
+            const fvPatch& patch = mesh().boundary()[patchi];
+            const scalar j =
+                -medium().vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
+                *patch.deltaCoeffs()[i]*patch.magSf()[i];
+            F[2] += (j - F[0])*(j > 0 ? c.hW : b.hW);
+            F[0] = j;
+        }
+    }
+
+    const fvMesh& mesh() const
+    {
+        return refCast<const fvMesh>(coupledResidual::mesh());
+    }
+};
+
+
+//- max over cells of |R_k|/scale / tol for the water (R_0), the gas
+//  (R_0 + R_1) and the energy (R_2): the residuals in units of the
+//  segregated solver's tolerances
+FixedList<scalar, 3> scaledResiduals
+(
+    const pendularResidual& res,
+    const scalarField& x,
+    const scalarField& R,
+    const FixedList<scalar, 3>& tol
+)
+{
+    scalarField sW, sG, sE;
+    res.scales(x, sW, sG, sE);
+    FixedList<scalar, 3> r(scalar(0));
+    forAll(sW, c)
+    {
+        r[0] = max(r[0], mag(R[3*c])/sW[c]/tol[0]);
+        r[1] = max(r[1], mag(R[3*c] + R[3*c + 1])/sG[c]/tol[1]);
+        r[2] = max(r[2], mag(R[3*c + 2])/sE[c]/tol[2]);
+    }
+    return r;
+}
+
+//- The face-by-face Jacobian at x against a central difference of the
+//  full residual, every column: steps 1e-4 K, 1e-4 Pa, 1e-6 max(W, 1e-4
+//  kg/m3), truncation ~h^2 and round-off ~1e-16 |R|/h both below 1e-7 of
+//  the entries (the face-by-face steps are eps^(1/3) of the scales)
+void jacobianCheck
+(
+    const fvMesh& mesh,
+    const pendularResidual& res,
+    const scalarField& x,
+    const char* where
+)
+{
+    blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+    res.jacobian(x, sys);
+    const scalar hk[3] = {1e-4, 1e-4, 0};
+    scalar worst = 0;
+    label worstColumn = -1;
+    scalarField e(x.size()), Je, Rp, Rm;
+    for (label g = 0; g < x.size(); ++g)
+    {
+        const scalar h =
+            g % 3 == 2 ? 1e-6*max(mag(x[g]), 1e-4) : hk[g % 3];
+        e = Zero;
+        e[g] = 1;
+        scalarField xp(x);
+        xp[g] += h;
+        sys.multiply(e, Je);
+        res.residual(xp, Rp);
+        xp[g] -= 2*h;
+        res.residual(xp, Rm);
+        const scalarField fd((Rp - Rm)/(2*h));
+        const scalar err = max(mag(Je - fd))/max(max(mag(fd)), VSMALL);
+        if (err > 1e-6)
+        {
+            forAll(fd, i)
+            {
+                if (mag(Je[i] - fd[i]) > 1e-6*max(mag(fd)))
+                {
+                    Info<< "column " << g << " row " << i << ": J "
+                        << Je[i] << " FD " << fd[i] << endl;
+                }
+            }
+        }
+        if (err > worst)
+        {
+            worst = err;
+            worstColumn = g;
+        }
+    }
+    Info<< "worst column " << worstColumn << " (cell " << worstColumn/3
+        << ", unknown " << worstColumn % 3 << ") of " << x.size() << endl;
+    checkAbs
+    (
+        fmt("Jacobian vs central FD, %s", where),
+        worst, 0, 1e-6
+    );
+
+}
+
+//- Newton on res from x (no line search; with chop, a drying cell keeps
+//  at least a tenth of its water, pendularFoam's dryingFactor): the
+//  scaled residual norms, until below floor or maxIter
+DynamicList<scalar> newton
+(
+    const pendularResidual& res,
+    blockSystem& sys,
+    const FixedList<scalar, 3>& tol,
+    scalarField& x,
+    const bool chop,
+    const label maxIter,
+    const scalar floor
+)
+{
+    DynamicList<scalar> r;
+    for (label iter = 0; iter <= maxIter; ++iter)
+    {
+        const scalarField R(res.jacobian(x, sys));
+        const FixedList<scalar, 3> ri = scaledResiduals(res, x, R, tol);
+        r.append(max(ri[0], max(ri[1], ri[2])));
+        Info<< (chop ? "chopped" : "pure") << " Newton " << iter
+            << ": max |R|/(storage tol) " << r.last() << " (water " << ri[0]
+            << ", gas " << ri[1] << ", energy " << ri[2] << ")";
+        if (iter > 0)
+        {
+            Info<< ", ratio " << r.last()/r[iter - 1] << ", r_k/r_k-1^2 "
+                << r.last()/sqr(r[iter - 1]);
+        }
+        Info<< endl;
+        if (r.last() < floor || iter == maxIter)
+        {
+            break;
+        }
+        scalarField dx(x.size(), Zero);
+        sys.solve(dx);
+        label nChopped = 0;
+        for (label c = 0; c < x.size()/3; ++c)
+        {
+            x[3*c] += dx[3*c];
+            x[3*c + 1] += dx[3*c + 1];
+            const scalar Wnew = x[3*c + 2] + dx[3*c + 2];
+            if (chop && Wnew < 0.1*x[3*c + 2])
+            {
+                ++nChopped;
+                x[3*c + 2] *= 0.1;
+            }
+            else
+            {
+                x[3*c + 2] = Wnew;
+            }
+        }
+        if (nChopped)
+        {
+            Info<< "    chopped " << nChopped << " cells" << endl;
+        }
+    }
+    return r;
+}
+
+} // End namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    petscSession petsc;
+
+    // Old state: time 0; pendularFoam's step: the latest time
+    const instantList times = runTime.times();
+    const instant& last = times.last();
+    const scalar dt = last.value();
+    auto readField = [&](const word& name, const word& instance)
+    {
+        return volScalarField
+        (
+            IOobject(name, instance, mesh, IOobject::MUST_READ),
+            mesh
+        );
+    };
+    const volScalarField T0(readField("T", "0"));
+    const volScalarField p0(readField("p", "0"));
+    const volScalarField alpha0(readField("alphaL", "0"));
+    runTime.setTime(last, times.size() - 1);
+    const volScalarField T(readField("T", last.name()));
+    const volScalarField p(readField("p", last.name()));
+    const volScalarField pw(readField("pw", last.name()));
+    const volScalarField W(readField("W", last.name()));
+    const volScalarField alpha(readField("alphaL", last.name()));
+
+    pendularMedium medium(mesh);
+    const scalarField& phi = medium.porosity().primitiveField();
+
+    scalarField W0(mesh.nCells());
+    scalar WScale = 0;
+    forAll(W0, c)
+    {
+        W0[c] = medium.waterContent(alpha0[c], T0[c], phi[c]);
+        WScale =
+            max
+            (
+                max(WScale, W0[c]),
+                phi[c]*medium.Mw()*medium.saturationPressure(T0[c])
+               /(medium.R()*T0[c])
+            );
+    }
+
+    const dictionary& nonlinearDict = mesh.solutionDict().subDict("nonlinear");
+    const FixedList<scalar, 3> tol
+    ({
+        nonlinearDict.get<scalar>("WTol")*WScale,
+        nonlinearDict.get<scalar>("pTol"),
+        nonlinearDict.get<scalar>("TTol")
+    });
+    Info<< "dt = " << dt << " s, " << mesh.nCells() << " cells, W^n in ["
+        << gMin(W0) << ", " << gMax(W0) << "] kg/m3, W in [" << gMin(W)
+        << ", " << gMax(W) << "], alpha_l in [" << gMin(alpha) << ", "
+        << gMax(alpha) << "]" << endl;
+
+    // p_g relative to the atmosphere's
+    const scalar pRef = 1e5;
+    const scalarField x0(pendularResidual::pack(T0, p0, W0, pRef));
+    const scalarField x(pendularResidual::pack(T, p, W, pRef));
+    pendularResidual res(medium, T, p, pw, pRef, x0, alpha, dt);
+
+    // 1. consistency
+    section("1. residual at pendularFoam's step / its tolerances");
+    scalarField R;
+    res.residual(x, R);
+    const FixedList<scalar, 3> r = scaledResiduals(res, x, R, tol);
+    const char* names[3] = {"water", "gas", "energy"};
+    for (label k = 0; k < 3; ++k)
+    {
+        checkAbs
+        (
+            fmt("%s: max |R|/(storage tol)", names[k]), r[k], 0, 1
+        );
+    }
+    for (const auto t : {perturbedResidual::term::stefan,
+        perturbedResidual::term::enthalpy})
+    {
+        perturbedResidual wrong(t, medium, T, p, pw, pRef, x0, alpha, dt);
+        wrong.residual(x, R);
+        const FixedList<scalar, 3> rw = scaledResiduals(wrong, x, R, tol);
+        const bool stefan = t == perturbedResidual::term::stefan;
+        checkAtLeast
+        (
+            stefan
+          ? "no Stefan factor: water max |R|/(storage tol)"
+          : "no enthalpy carried: energy max |R|/(storage tol)",
+            stefan ? rw[0] : rw[2], 10, 0
+        );
+    }
+
+    // 2. Jacobian against a central difference of the full residual, at
+    // pendularFoam's state (wet and drying cells) and with the top row's
+    // cells 8-10 above the dry-out temperature (dry: all their water
+    // vapour)
+    section("2. Jacobian, every column");
+    jacobianCheck(mesh, res, x, "wet and drying cells");
+    scalarField xDry(x);
+    for (label c = 8; c <= 10; ++c)
+    {
+        xDry[3*c] = medium.dryOutTemperature() + 20 + 5*c;
+    }
+    scalar alphaDry = 0;
+    for (label c = 8; c <= 10; ++c)
+    {
+        alphaDry = max(alphaDry, res.state(c, &xDry[3*c]).alpha);
+    }
+    checkAbs("cells 8-10 dry: max alpha_l", alphaDry, 0, 0);
+    jacobianCheck(mesh, res, xDry, "cells 8-10 dry (T > T_d)");
+    // 3. Newton from the old state (the liquid fraction guessed from the
+    // old one), no line search: pure, and with pendularFoam's chop of the
+    // water of drying cells
+    section("3. Newton from the old state");
+    pendularResidual newtonRes(medium, T, p, pw, pRef, x0, alpha0, dt);
+    blockSystem newtonSys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+    // round-off floor of the scaled residuals: 0.015-0.03 measured (the
+    // gas balance: A - A^n of ~0.3 kg/m3 to 1e-16 is ~3e-7 Pa of p_g)
+    const scalar floor = 0.1;
+    scalarField xPure(x0);
+    const DynamicList<scalar> rPure =
+        newton(newtonRes, newtonSys, tol, xPure, false, 12, floor);
+    Info<< "pure Newton: " << (rPure.last() < floor ? "converged" : "not converged")
+        << " in 12 iterations, last max |R|/(storage tol) " << rPure.last()
+        << endl;
+
+    scalarField xn(x0);
+    const DynamicList<scalar> rn =
+        newton(newtonRes, newtonSys, tol, xn, true, 15, floor);
+    checkTrue
+    (
+        "Newton with chop: iterations to the round-off floor",
+        rn.last() < floor, rn.size() - 1, 15, "<="
+    );
+    scalar order = 0;
+    for (label k = 1; k + 1 < rn.size(); ++k)
+    {
+        if (rn[k + 1] > floor)
+        {
+            order = Foam::log(rn[k + 1]/rn[k])/Foam::log(rn[k]/rn[k - 1]);
+        }
+    }
+    checkAtLeast("order of convergence, last step above floor", order, 1.8, 0);
+    scalar dT = 0, dP = 0, dW = 0;
+    forAll(T, c)
+    {
+        dT = max(dT, mag(xn[3*c] - x[3*c]));
+        dP = max(dP, mag(xn[3*c + 1] - x[3*c + 1]));
+        dW = max(dW, mag(xn[3*c + 2] - x[3*c + 2]));
+    }
+    // pendularFoam's state is within its tolerances of the solution
+    checkAbs("Newton - pendularFoam: max |dT| [K] (TTol)", dT, 0, tol[2]);
+    checkAbs("Newton - pendularFoam: max |dp| [Pa] (pTol)", dP, 0, tol[1]);
+    checkAbs("Newton - pendularFoam: max |dW| [kg/m3] (WTol WScale)", dW, 0, tol[0]);
+
+    Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
+        << endl;
+    return nFailed > 0;
+}
+
+
+// ************************************************************************* //
