@@ -11,6 +11,7 @@
 #include "OStringStream.H"
 #include "checkedRead.H"
 #include "numericTable.H"
+#include "fireHistory.H"
 
 #include <algorithm>
 #include <cmath>
@@ -518,6 +519,57 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
 }
 
 
+void Foam::fireTemperatureFvPatchScalarField::readLaw
+(
+    const dictionary& dict
+)
+{
+    // Nothing of the file or table form: the law is the whole history
+    checkedRead::checkKeywords
+    (
+        dict,
+        wordList({"type", "fire", "cooling", "value", "patchType"}),
+        "boundary condition " + type() + " on patch '" + patch().name()
+      + "' of field " + internalField().name() + " with a fire law (fire,"
+        " cooling); file, table and their keywords are the other form"
+    );
+    for (const word& key : wordList({"fire", "cooling"}))
+    {
+        if (!dict.isDict(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword '" << key << "' of boundary condition " << type()
+                << " on patch '" << patch().name() << "' is not a"
+                << " sub-dictionary: the fire law needs" << nl
+                << "    fire    { temperature 700; duration 6; }  // C, h"
+                << nl
+                << "    cooling { type exponential; Tair 20; tau 1;"
+                << " duration 18; }" << nl << exit(FatalIOError);
+        }
+    }
+    fireDict_ = dict.subDict("fire");
+    coolingDict_ = dict.subDict("cooling");
+
+    const fireHistory law(fireDict_, coolingDict_, wordList({"duration"}));
+
+    // Duration from ignition to extinction [h], at least the ramp
+    const scalar duration =
+        checkedRead::get
+        (
+            fireDict_, "duration", dimless,
+            validRange{law.rampTime()/fireHistory::hour, GREAT, false, true}
+        ).value()*fireHistory::hour;
+
+    history_ = law.table(duration);
+
+    Info<< "fireTemperature on patch " << patch().name() << " of field "
+        << internalField().name() << ": " << law.description().c_str()
+        << "; fire duration " << duration/fireHistory::hour << " h; "
+        << history_.size() << " points from t = " << history_.times().first()
+        << " to " << history_.times().last() << " s" << endl;
+}
+
+
 void Foam::fireTemperatureFvPatchScalarField::printSummary
 (
     const label nHeader
@@ -576,6 +628,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
+    fireDict_(),
+    coolingDict_(),
     history_(),
     file_(),
     dictName_(iF.objectPath()),
@@ -602,11 +656,20 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
+    fireDict_(),
+    coolingDict_(),
     history_(),
     file_(),
     dictName_(dict.name()),
     dictLine_(dict.startLineNumber())
 {
+    if (dict.found("fire", keyType::LITERAL))
+    {
+        readLaw(dict);
+        fvPatchScalarField::operator=(temperature(db().time().value()));
+        return;
+    }
+
     readKeywords(dict);
 
     const bool hasFile = dict.found("file", keyType::LITERAL);
@@ -661,6 +724,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -687,6 +752,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -712,6 +779,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -788,6 +857,19 @@ void Foam::fireTemperatureFvPatchScalarField::write(Ostream& os) const
 
     // Enough digits to read back what was given
     const int oldPrecision = os.precision(max(os.precision(), 15));
+
+    if (fireDict_.size())
+    {
+        os.beginBlock("fire");
+        fireDict_.write(os, false);
+        os.endBlock();
+        os.beginBlock("cooling");
+        coolingDict_.write(os, false);
+        os.endBlock();
+        os.precision(oldPrecision);
+        writeEntry("value", os);
+        return;
+    }
 
     if (file_.size())
     {
