@@ -326,6 +326,22 @@ int main(int argc, char *argv[])
     IFstream dictStream(dictFile);
     const dictionary dict(dictStream);
 
+    // Unknown keywords (a misspelt 'writeInterval' would be ignored)
+    checkedRead::checkKeywords
+    (
+        dict,
+        wordList
+        ({
+            "initialTemperature", "layers", "substrate", "surface", "depths",
+            "times", "endTime", "writeInterval", "outputFile", "inversion"
+        }),
+        "quadrupoleTemperature"
+    );
+    const wordList materialKeywords
+    ({
+        "effusivity", "diffusivity", "conductivity", "volumetricHeatCapacity"
+    });
+
     Info<< "Reading " << dictFile << nl << endl;
 
     using quadrupole::real;
@@ -359,6 +375,15 @@ int main(int argc, char *argv[])
         const dictionary& ld = e.dict();
         quadrupole::gradedLayer L;
         L.name = e.keyword();
+        {
+            wordList known({"thickness", "gamma"});
+            for (const word& k : materialKeywords)
+            {
+                known.append(k);
+                known.append(word(k + "Bottom"));
+            }
+            checkedRead::checkKeywords(ld, known, "layer " + L.name);
+        }
         L.thickness =
             checkedRead::get(ld, "thickness", dimLength, checkedRead::positive())
            .value();
@@ -454,6 +479,7 @@ int main(int argc, char *argv[])
                 << exit(FatalIOError);
         }
         const dictionary& sd = dict.subDict("substrate");
+        checkedRead::checkKeywords(sd, materialKeywords, "substrate");
         scalar b, a;
         if (!readProperties(sd, "", b, a))
         {
@@ -475,6 +501,11 @@ int main(int argc, char *argv[])
             << nl << exit(FatalIOError);
     }
     const dictionary& surfaceDict = dict.subDict("surface");
+    checkedRead::checkKeywords
+    (
+        surfaceDict, wordList({"condition", "timeUnit", "table", "file"}),
+        "surface history"
+    );
     const word condition(surfaceDict.get<word>("condition"));
     if (condition != "temperature" && condition != "flux")
     {
@@ -674,6 +705,14 @@ int main(int argc, char *argv[])
     quadrupole::deHoogParameters par;
     {
         const dictionary& id = dict.optionalSubDict("inversion");
+        if (dict.isDict("inversion"))
+        {
+            checkedRead::checkKeywords
+            (
+                id, wordList({"M", "tolerance", "Tfactor"}),
+                "de Hoog inversion"
+            );
+        }
         const label M = id.getOrDefault<label>("M", par.M);
         checkedRead::check(id, "M", M, validRange{2, 500, false, false});
         par.M = M;
