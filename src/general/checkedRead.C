@@ -305,6 +305,19 @@ Foam::wordList Foam::checkedRead::patchFieldKeywords()
 }
 
 
+Foam::wordList Foam::checkedRead::functionObjectKeywords()
+{
+    return wordList
+    ({
+        "type", "libs", "functionObjectLibs", "region", "subRegion",
+        "enabled", "log", "timeStart", "timeEnd", "controlMode",
+        "triggerStart", "triggerEnd", "executeControl", "executeInterval",
+        "writeControl", "writeInterval", "outputControl", "outputInterval",
+        "deltaTCoeff", "nStepsToStartTimeChange"
+    });
+}
+
+
 void Foam::checkedRead::check
 (
     const fileName& fieldFile,

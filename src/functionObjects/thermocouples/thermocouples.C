@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "thermocouples.H"
+#include "checkedRead.H"
 #include "volFields.H"
 #include "interpolation.H"
 #include "IFstream.H"
@@ -494,6 +495,19 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     (
         fieldName_ + ' ' + interpolationScheme_ + ' ' + unit_
     );
+
+    // Unknown keywords (a misspelt 'unit' would silently give C)
+    {
+        wordList known(checkedRead::functionObjectKeywords());
+        known.append
+        (
+            wordList({"file", "field", "interpolationScheme", "unit", "precision"})
+        );
+        checkedRead::checkKeywords
+        (
+            dict, known, "function object " + name() + " (thermocouples)"
+        );
+    }
 
     // Settings
     fileName file(dict.get<fileName>("file"));
