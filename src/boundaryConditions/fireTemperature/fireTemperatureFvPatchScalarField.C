@@ -29,7 +29,8 @@ const char* const knownKeywords[] =
 {
     "type", "file", "table", "timeColumn", "temperatureColumn", "separator",
     "headerLines", "timeUnit", "temperatureUnit", "timeOffset",
-    "beforeStart", "afterEnd", "value", "patchType"
+    "beforeStart", "afterEnd", "value", "patchType",
+    "fire"      // (the other form, read by readLaw: named as a near miss)
 };
 
 } // End anonymous namespace
