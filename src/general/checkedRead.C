@@ -71,6 +71,89 @@ void Foam::checkedRead::check
 }
 
 
+void Foam::checkedRead::checkNumbers
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& expected
+)
+{
+    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+    if (!eptr)
+    {
+        const word near(nearest(keyword, dict.toc()));
+        string nearText;
+        if
+        (
+            near.size() && near != "FoamFile"
+         && editDistance(near, keyword) <= max(2, label(keyword.size())/4)
+        )
+        {
+            nearText = " (found '" + near + "': did you mean '" + keyword
+              + "'?)";
+        }
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword '" << keyword << "' in dictionary "
+            << dict.name() << ": expected " << expected.c_str()
+            << nearText.c_str() << nl << exit(FatalIOError);
+    }
+
+    const label line = eptr->startLineNumber();
+    auto bad = [&](const string& found)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+            line > 0 ? line : -1, -1
+        )   << "Keyword '" << keyword << "' in dictionary " << dict.name()
+            << " holds " << found.c_str() << ", not a finite number"
+            << " (nan and inf are not accepted): expected "
+            << expected.c_str() << nl << exit(FatalIOError);
+    };
+
+    if (eptr->isDict())
+    {
+        bad("a sub-dictionary");
+    }
+    for (const token& tok : static_cast<const tokenList&>(eptr->stream()))
+    {
+        if (tok.isNumber())
+        {
+            if (!std::isfinite(tok.number()))
+            {
+                OStringStream os;
+                os  << tok.number();
+                bad("'" + os.str() + "'");
+            }
+        }
+        else if (!tok.isPunctuation())
+        {
+            OStringStream os;
+            os  << tok;
+            bad("'" + os.str() + "'");
+        }
+    }
+}
+
+
+Foam::scalarList Foam::checkedRead::getList
+(
+    const dictionary& dict,
+    const word& keyword,
+    const validRange& range,
+    const string& expected
+)
+{
+    checkNumbers(dict, keyword, expected);
+    const scalarList values(dict.get<scalarList>(keyword));
+    for (const scalar x : values)
+    {
+        check(dict, keyword, x, range);
+    }
+    return values;
+}
+
+
 Foam::label Foam::checkedRead::editDistance
 (
     const std::string& a,

@@ -546,6 +546,11 @@ int main(int argc, char *argv[])
     labelList historyLines;
     if (hasTable)
     {
+        checkedRead::checkNumbers
+        (
+            surfaceDict, "table",
+            "(time value) rows, times >= 0 in timeUnit, e.g. ((0 20) (600 700))"
+        );
         rows = surfaceDict.get<List<Tuple2<scalar, scalar>>>("table");
         historySource = "table of " + surfaceDict.name();
         if (rows.empty())
@@ -612,7 +617,14 @@ int main(int argc, char *argv[])
 
     // Depths and times -------------------------------------------------------
 
-    const scalarList depths(dict.get<scalarList>("depths"));
+    const scalarList depths
+    (
+        checkedRead::getList
+        (
+            dict, "depths", checkedRead::positive(),
+            "depths [m] below the surface in (0, inf), e.g. (0.01 0.05)"
+        )
+    );
     std::vector<real> depthList;
     forAll(depths, j)
     {
@@ -638,7 +650,14 @@ int main(int argc, char *argv[])
                 << "Give either 'times' or 'endTime' and 'writeInterval'"
                 << nl << exit(FatalIOError);
         }
-        const scalarList tl(dict.get<scalarList>("times"));
+        const scalarList tl
+        (
+            checkedRead::getList
+            (
+                dict, "times", checkedRead::positive(),
+                "output times [s] in (0, inf), increasing"
+            )
+        );
         if (tl.empty())
         {
             FatalIOErrorInFunction(dict)

@@ -259,7 +259,13 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
     afterEnd_ = readChoice("afterEnd", "hold", wordList({"hold", "error"}));
 
     // Offset [s]
-    timeOffset_ = dict.getOrDefault<scalar>("timeOffset", 0);
+    // (a finite number: nan, inf or a word named with the file and line)
+    timeOffset_ =
+        checkedRead::getOrDefault
+        (
+            dict, "timeOffset", dimTime, 0,
+            validRange{-GREAT, GREAT, true, true}
+        ).value();
     // (bounded so that the times in s cannot overflow: see addRow)
     if
     (
@@ -492,6 +498,12 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
     const entry& e = dict.lookupEntry("table", keyType::LITERAL);
     const label line = e.startLineNumber();
 
+    checkedRead::checkNumbers
+    (
+        dict, "table",
+        "(time temperature) rows in timeUnit and temperatureUnit, times"
+        " increasing, e.g. ((0 20) (600 700))"
+    );
     tableEntry_ = dict.get<List<Tuple2<scalar, scalar>>>("table");
 
     if (tableEntry_.empty())

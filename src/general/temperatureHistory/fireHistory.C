@@ -114,6 +114,12 @@ Foam::fireHistory::fireHistory
     }
     else if (coolingType_ == "table")
     {
+        checkedRead::checkNumbers
+        (
+            coolingDict, "table",
+            "(time after extinction [h], T [C]) pairs, times > 0 and"
+            " strictly increasing, e.g. ((0.5 300) (2 100) (6 20))"
+        );
         coolingTable_ =
             coolingDict.get<List<Tuple2<scalar, scalar>>>("table");
 
