@@ -732,6 +732,10 @@ int main(int argc, char *argv[])
                 "de Hoog inversion"
             );
         }
+        if (id.found("M"))
+        {
+            checkedRead::checkNumbers(id, "M", "an integer in [2, 500]");
+        }
         const label M = id.getOrDefault<label>("M", par.M);
         checkedRead::check(id, "M", M, validRange{2, 500, false, false});
         par.M = M;

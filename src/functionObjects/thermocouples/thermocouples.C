@@ -548,6 +548,13 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
             << "' is neither C nor K" << exit(FatalIOError);
     }
 
+    if (dict.found("precision"))
+    {
+        checkedRead::checkNumbers
+        (
+            dict, "precision", "an integer in [1, 17] (significant digits)"
+        );
+    }
     precision_ = dict.getOrDefault<label>("precision", 10);
     if (precision_ < 1 || precision_ > 17)
     {
