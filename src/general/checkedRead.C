@@ -14,6 +14,42 @@
 #include <cmath>
 #include <vector>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- FatalIOError: keyword missing from dict, with what was expected and a
+//  near miss among the keywords given (a misspelt keyword) if there is one
+void missingKeyword
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::string& expected
+)
+{
+    using namespace Foam;
+    const word near(checkedRead::nearest(keyword, dict.toc()));
+    string nearText;
+    if
+    (
+        near.size() && near != "FoamFile"
+     && checkedRead::editDistance(near, keyword)
+     <= max(2, label(keyword.size())/4)
+    )
+    {
+        nearText =
+            " (found '" + near + "': a misspelling of '" + keyword + "'?)";
+    }
+    FatalIOErrorInFunction(dict)
+        << "Missing keyword '" << keyword << "' in dictionary "
+        << dict.name() << ": expected " << expected.c_str()
+        << nearText.c_str() << nl << exit(FatalIOError);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 Foam::string Foam::validRange::str() const
@@ -81,21 +117,7 @@ void Foam::checkedRead::checkNumbers
     const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
     if (!eptr)
     {
-        const word near(nearest(keyword, dict.toc()));
-        string nearText;
-        if
-        (
-            near.size() && near != "FoamFile"
-         && editDistance(near, keyword) <= max(2, label(keyword.size())/4)
-        )
-        {
-            nearText = " (found '" + near + "': did you mean '" + keyword
-              + "'?)";
-        }
-        FatalIOErrorInFunction(dict)
-            << "Missing keyword '" << keyword << "' in dictionary "
-            << dict.name() << ": expected " << expected.c_str()
-            << nearText.c_str() << nl << exit(FatalIOError);
+        missingKeyword(dict, keyword, expected);
     }
 
     const label line = eptr->startLineNumber();
@@ -436,24 +458,11 @@ Foam::dimensionedScalar Foam::checkedRead::get
 {
     if (!dict.found(keyword))
     {
-        // A near miss among the keywords given (a misspelt keyword)
-        const word near(nearest(keyword, dict.toc()));
-        string nearText;
-        if
-        (
-            near.size() && near != "FoamFile"
-         && editDistance(near, keyword) <= max(2, label(keyword.size())/4)
-        )
-        {
-            nearText =
-                " (found '" + near + "': a misspelling of '" + keyword
-              + "'?)";
-        }
-        FatalIOErrorInFunction(dict)
-            << "Missing keyword '" << keyword << "' in dictionary "
-            << dict.name() << ": expected a value with dimensions " << dims
-            << " in the range " << range.str().c_str() << nearText.c_str()
-            << nl << exit(FatalIOError);
+        OStringStream expected;
+        expected
+            << "a value with dimensions " << dims << " in the range "
+            << range.str().c_str();
+        missingKeyword(dict, keyword, expected.str());
     }
 
     // The value must be a finite number: 'nan' or 'inf' are words to the
