@@ -14,6 +14,42 @@
 #include <cmath>
 #include <vector>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- FatalIOError: keyword missing from dict, with what was expected and a
+//  near miss among the keywords given (a misspelt keyword) if there is one
+void missingKeyword
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::string& expected
+)
+{
+    using namespace Foam;
+    const word near(checkedRead::nearest(keyword, dict.toc()));
+    string nearText;
+    if
+    (
+        near.size() && near != "FoamFile"
+     && checkedRead::editDistance(near, keyword)
+     <= max(2, label(keyword.size())/4)
+    )
+    {
+        nearText =
+            " (found '" + near + "': a misspelling of '" + keyword + "'?)";
+    }
+    FatalIOErrorInFunction(dict)
+        << "Missing keyword '" << keyword << "' in dictionary "
+        << dict.name() << ": expected " << expected.c_str()
+        << nearText.c_str() << nl << exit(FatalIOError);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 Foam::string Foam::validRange::str() const
@@ -68,6 +104,75 @@ void Foam::checkedRead::check
             << " in dictionary " << dict.name() << nl
             << exit(FatalIOError);
     }
+}
+
+
+void Foam::checkedRead::checkNumbers
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& expected
+)
+{
+    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+    if (!eptr)
+    {
+        missingKeyword(dict, keyword, expected);
+    }
+
+    const label line = eptr->startLineNumber();
+    auto bad = [&](const string& found)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+            line > 0 ? line : -1, -1
+        )   << "Keyword '" << keyword << "' in dictionary " << dict.name()
+            << " holds " << found.c_str() << ", not a finite number"
+            << " (nan and inf are not accepted): expected "
+            << expected.c_str() << nl << exit(FatalIOError);
+    };
+
+    if (eptr->isDict())
+    {
+        bad("a sub-dictionary");
+    }
+    for (const token& tok : static_cast<const tokenList&>(eptr->stream()))
+    {
+        if (tok.isNumber())
+        {
+            if (!std::isfinite(tok.number()))
+            {
+                OStringStream os;
+                os  << tok.number();
+                bad("'" + os.str() + "'");
+            }
+        }
+        else if (!tok.isPunctuation())
+        {
+            OStringStream os;
+            os  << tok;
+            bad("'" + os.str() + "'");
+        }
+    }
+}
+
+
+Foam::scalarList Foam::checkedRead::getList
+(
+    const dictionary& dict,
+    const word& keyword,
+    const validRange& range,
+    const string& expected
+)
+{
+    checkNumbers(dict, keyword, expected);
+    const scalarList values(dict.get<scalarList>(keyword));
+    for (const scalar x : values)
+    {
+        check(dict, keyword, x, range);
+    }
+    return values;
 }
 
 
@@ -305,6 +410,19 @@ Foam::wordList Foam::checkedRead::patchFieldKeywords()
 }
 
 
+Foam::wordList Foam::checkedRead::functionObjectKeywords()
+{
+    return wordList
+    ({
+        "type", "libs", "functionObjectLibs", "region", "subRegion",
+        "enabled", "log", "timeStart", "timeEnd", "controlMode",
+        "triggerStart", "triggerEnd", "executeControl", "executeInterval",
+        "writeControl", "writeInterval", "outputControl", "outputInterval",
+        "deltaTCoeff", "nStepsToStartTimeChange"
+    });
+}
+
+
 void Foam::checkedRead::check
 (
     const fileName& fieldFile,
@@ -340,24 +458,11 @@ Foam::dimensionedScalar Foam::checkedRead::get
 {
     if (!dict.found(keyword))
     {
-        // A near miss among the keywords given (a misspelt keyword)
-        const word near(nearest(keyword, dict.toc()));
-        string nearText;
-        if
-        (
-            near.size() && near != "FoamFile"
-         && editDistance(near, keyword) <= max(2, label(keyword.size())/4)
-        )
-        {
-            nearText =
-                " (found '" + near + "': a misspelling of '" + keyword
-              + "'?)";
-        }
-        FatalIOErrorInFunction(dict)
-            << "Missing keyword '" << keyword << "' in dictionary "
-            << dict.name() << ": expected a value with dimensions " << dims
-            << " in the range " << range.str().c_str() << nearText.c_str()
-            << nl << exit(FatalIOError);
+        OStringStream expected;
+        expected
+            << "a value with dimensions " << dims << " in the range "
+            << range.str().c_str();
+        missingKeyword(dict, keyword, expected.str());
     }
 
     // The value must be a finite number: 'nan' or 'inf' are words to the

@@ -106,4 +106,28 @@ c.le('fire history: linear interpolation at midpoints [K]',
          for a, b in zip(pts[2:], pts[3:])), 0.05)
 c.true('fire history: followed 6 h after extinction',
        abs(pts[-1][0] - (d + 6*3600)) < 1e-6, '%g s' % pts[-1][0])
+
+# 5. The same law in the fireTemperature boundary condition: its patch
+# temperature at each step against hearthDuration's history of 4, linear
+# between the points (what uniformFixedValue tableFile does). Both come
+# from Foam::fireHistory::table; the file holds 12 significant digits
+# (5e-10 K at 1000 K, times 5e-9 s): 1e-8 K allowed. A law read
+# differently (tau in s, ramp missing, cooling from Tair) is off by K.
+import glob
+law = glob.glob('law/postProcessing/firePatch/0/surfaceFieldValue.dat')
+rows = [l.split() for l in open(law[0]) if l.strip() and l[0] != '#'] \
+    if law else []
+def interp(t):
+    if t <= pts[0][0]:
+        return pts[0][1]
+    for a, b in zip(pts, pts[1:]):
+        if t <= b[0]:
+            return a[1] + (b[1] - a[1])*(t - a[0])/(b[0] - a[0])
+    return pts[-1][1]
+diffs = [abs(float(r[1]) - interp(float(r[0]))) for r in rows]
+c.true('fire law in the BC: steps to 3 h (ramp, plateau, cooling)',
+       len(rows) > 20 and float(rows[-1][0]) >= 10800 - 60,  # maxDeltaT 60
+       '%d steps' % len(rows))
+c.le('fire law in the BC vs hearthDuration history: max |dT| [K]',
+     max(diffs) if diffs else 1e9, 1e-8)
 c.done()

@@ -13,6 +13,10 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+from hearthTutorial import Figures  # noqa: E402
+
 nProcs, seconds = sys.argv[1], sys.argv[2]
 
 
@@ -84,6 +88,44 @@ allmesh = open('log.Allmesh').read()
 cells = re.search(r'cells: *(\d+)', allmesh).group(1)
 layers = re.search(r'boundary layers: (.*)', allmesh).group(1)
 scan = re.search(r'prepareScan: (.*)', allmesh).group(1)
+
+# figures.csv: what the README prints (tests/tutorialScannedPit)
+fig = Figures()
+fig.add('cells', float(cells), '')
+number = r'(-?[\d.]+)'
+m = re.search(r'(\d+) triangles .*rim of (\d+) points .*pit %s m deep.*'
+              r'area %s m2, volume %s m3' % (number, number, number), scan)
+for k, (name, unit) in enumerate((('triangles', ''), ('rimPoints', ''),
+                                  ('pitDepth', 'm'), ('area', 'm2'),
+                                  ('volume', 'm3'))):
+    fig.add(name, float(m.group(k + 1)), unit)
+m = re.search(r'%s of \d+ on average .*coverage %s\), %s m thick'
+              % (number, number, number), layers)
+for k, (name, unit) in enumerate((('layersMean', ''), ('layerCoverage', ''),
+                                  ('layerThickness', 'm'))):
+    fig.add(name, float(m.group(k + 1)), unit)
+for n in lines:
+    if surf[n] is None:
+        continue
+    fig.add('surface_%s' % n, 100*surf[n], 'cm')
+    fig.add('slope_%s' % n, hits[n][2], 'deg')
+    fig.add('cosine_%s' % n, hits[n][3], '')
+    for r in rows:
+        dep = float(r['depth_%s_m' % n])
+        th = '%g' % float(r['threshold_C'])
+        fig.add('depth%s_%s' % (th, n),
+                100*(dep - surf[n]) if dep > 0 else None, 'cm')
+        fig.add('normal%s_%s' % (th, n),
+                100*(dep - surf[n])*hits[n][3] if dep > 0 else None, 'cm')
+if os.path.exists('TMaxSection.csv'):
+    for r in csv.DictReader(open('TMaxSection.csv')):
+        th = '%g' % float(r['TMax_C'])
+        for key, name in (('depth_under_centre_m', 'sectionDepth'),
+                          ('largest_horizontal_extent_m', 'sectionWidth')):
+            v = r[key]
+            fig.add('%s%s' % (name, th),
+                    100*float(v) if v not in ('', 'nan') else None, 'cm')
+fig.write()
 
 print('scannedPit: a synthetic scanned pit, floor at 600 C and walls at 400 C '
       'for %g h on wet clay (phi = 10 %%)' % (float(t)/3600))

@@ -326,6 +326,22 @@ int main(int argc, char *argv[])
     IFstream dictStream(dictFile);
     const dictionary dict(dictStream);
 
+    // Unknown keywords (a misspelt 'writeInterval' would be ignored)
+    checkedRead::checkKeywords
+    (
+        dict,
+        wordList
+        ({
+            "initialTemperature", "layers", "substrate", "surface", "depths",
+            "times", "endTime", "writeInterval", "outputFile", "inversion"
+        }),
+        "quadrupoleTemperature"
+    );
+    const wordList materialKeywords
+    ({
+        "effusivity", "diffusivity", "conductivity", "volumetricHeatCapacity"
+    });
+
     Info<< "Reading " << dictFile << nl << endl;
 
     using quadrupole::real;
@@ -359,6 +375,15 @@ int main(int argc, char *argv[])
         const dictionary& ld = e.dict();
         quadrupole::gradedLayer L;
         L.name = e.keyword();
+        {
+            wordList known({"thickness", "gamma"});
+            for (const word& k : materialKeywords)
+            {
+                known.append(k);
+                known.append(word(k + "Bottom"));
+            }
+            checkedRead::checkKeywords(ld, known, "layer " + L.name);
+        }
         L.thickness =
             checkedRead::get(ld, "thickness", dimLength, checkedRead::positive())
            .value();
@@ -454,6 +479,7 @@ int main(int argc, char *argv[])
                 << exit(FatalIOError);
         }
         const dictionary& sd = dict.subDict("substrate");
+        checkedRead::checkKeywords(sd, materialKeywords, "substrate");
         scalar b, a;
         if (!readProperties(sd, "", b, a))
         {
@@ -475,6 +501,11 @@ int main(int argc, char *argv[])
             << nl << exit(FatalIOError);
     }
     const dictionary& surfaceDict = dict.subDict("surface");
+    checkedRead::checkKeywords
+    (
+        surfaceDict, wordList({"condition", "timeUnit", "table", "file"}),
+        "surface history"
+    );
     const word condition(surfaceDict.get<word>("condition"));
     if (condition != "temperature" && condition != "flux")
     {
@@ -515,6 +546,11 @@ int main(int argc, char *argv[])
     labelList historyLines;
     if (hasTable)
     {
+        checkedRead::checkNumbers
+        (
+            surfaceDict, "table",
+            "(time value) rows, times >= 0 in timeUnit, e.g. ((0 20) (600 700))"
+        );
         rows = surfaceDict.get<List<Tuple2<scalar, scalar>>>("table");
         historySource = "table of " + surfaceDict.name();
         if (rows.empty())
@@ -581,7 +617,14 @@ int main(int argc, char *argv[])
 
     // Depths and times -------------------------------------------------------
 
-    const scalarList depths(dict.get<scalarList>("depths"));
+    const scalarList depths
+    (
+        checkedRead::getList
+        (
+            dict, "depths", checkedRead::positive(),
+            "depths [m] below the surface in (0, inf), e.g. (0.01 0.05)"
+        )
+    );
     std::vector<real> depthList;
     forAll(depths, j)
     {
@@ -607,7 +650,14 @@ int main(int argc, char *argv[])
                 << "Give either 'times' or 'endTime' and 'writeInterval'"
                 << nl << exit(FatalIOError);
         }
-        const scalarList tl(dict.get<scalarList>("times"));
+        const scalarList tl
+        (
+            checkedRead::getList
+            (
+                dict, "times", checkedRead::positive(),
+                "output times [s] in (0, inf), increasing"
+            )
+        );
         if (tl.empty())
         {
             FatalIOErrorInFunction(dict)
@@ -674,6 +724,18 @@ int main(int argc, char *argv[])
     quadrupole::deHoogParameters par;
     {
         const dictionary& id = dict.optionalSubDict("inversion");
+        if (dict.isDict("inversion"))
+        {
+            checkedRead::checkKeywords
+            (
+                id, wordList({"M", "tolerance", "Tfactor"}),
+                "de Hoog inversion"
+            );
+        }
+        if (id.found("M"))
+        {
+            checkedRead::checkNumbers(id, "M", "an integer in [2, 500]");
+        }
         const label M = id.getOrDefault<label>("M", par.M);
         checkedRead::check(id, "M", M, validRange{2, 500, false, false});
         par.M = M;

@@ -259,8 +259,13 @@ std::vector<profilePiece> readPieces
 
         profilePiece p;
         p.layer = name;
+        checkedRead::checkNumbers(ld, "from", "a depth [m]");
         p.from = ld.get<scalar>("from");
         p.hasTo = ld.found("to");
+        if (p.hasTo)
+        {
+            checkedRead::checkNumbers(ld, "to", "a depth [m] below 'from'");
+        }
         p.to = p.hasTo ? ld.get<scalar>("to") : GREAT;
         p.dict = &ld;
         p.keyword = "value";

@@ -11,6 +11,7 @@
 #include "OStringStream.H"
 #include "checkedRead.H"
 #include "numericTable.H"
+#include "fireHistory.H"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,8 @@ const char* const knownKeywords[] =
 {
     "type", "file", "table", "timeColumn", "temperatureColumn", "separator",
     "headerLines", "timeUnit", "temperatureUnit", "timeOffset",
-    "beforeStart", "afterEnd", "value", "patchType"
+    "beforeStart", "afterEnd", "value", "patchType",
+    "fire"      // (the other form, read by readLaw: named as a near miss)
 };
 
 } // End anonymous namespace
@@ -257,7 +259,13 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
     afterEnd_ = readChoice("afterEnd", "hold", wordList({"hold", "error"}));
 
     // Offset [s]
-    timeOffset_ = dict.getOrDefault<scalar>("timeOffset", 0);
+    // (a finite number: nan, inf or a word named with the file and line)
+    timeOffset_ =
+        checkedRead::getOrDefault
+        (
+            dict, "timeOffset", dimTime, 0,
+            validRange{-GREAT, GREAT, true, true}
+        ).value();
     // (bounded so that the times in s cannot overflow: see addRow)
     if
     (
@@ -490,6 +498,12 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
     const entry& e = dict.lookupEntry("table", keyType::LITERAL);
     const label line = e.startLineNumber();
 
+    checkedRead::checkNumbers
+    (
+        dict, "table",
+        "(time temperature) rows in timeUnit and temperatureUnit, times"
+        " increasing, e.g. ((0 20) (600 700))"
+    );
     tableEntry_ = dict.get<List<Tuple2<scalar, scalar>>>("table");
 
     if (tableEntry_.empty())
@@ -515,6 +529,57 @@ void Foam::fireTemperatureFvPatchScalarField::readTable
     }
 
     printSummary(0);
+}
+
+
+void Foam::fireTemperatureFvPatchScalarField::readLaw
+(
+    const dictionary& dict
+)
+{
+    // Nothing of the file or table form: the law is the whole history
+    checkedRead::checkKeywords
+    (
+        dict,
+        wordList({"type", "fire", "cooling", "value", "patchType"}),
+        "boundary condition " + type() + " on patch '" + patch().name()
+      + "' of field " + internalField().name() + " with a fire law (fire,"
+        " cooling); file, table and their keywords are the other form"
+    );
+    for (const word& key : wordList({"fire", "cooling"}))
+    {
+        if (!dict.isDict(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword '" << key << "' of boundary condition " << type()
+                << " on patch '" << patch().name() << "' is not a"
+                << " sub-dictionary: the fire law needs" << nl
+                << "    fire    { temperature 700; duration 6; }  // C, h"
+                << nl
+                << "    cooling { type exponential; Tair 20; tau 1;"
+                << " duration 18; }" << nl << exit(FatalIOError);
+        }
+    }
+    fireDict_ = dict.subDict("fire");
+    coolingDict_ = dict.subDict("cooling");
+
+    const fireHistory law(fireDict_, coolingDict_, wordList({"duration"}));
+
+    // Duration from ignition to extinction [h], at least the ramp
+    const scalar duration =
+        checkedRead::get
+        (
+            fireDict_, "duration", dimless,
+            validRange{law.rampTime()/fireHistory::hour, GREAT, false, true}
+        ).value()*fireHistory::hour;
+
+    history_ = law.table(duration);
+
+    Info<< "fireTemperature on patch " << patch().name() << " of field "
+        << internalField().name() << ": " << law.description().c_str()
+        << "; fire duration " << duration/fireHistory::hour << " h; "
+        << history_.size() << " points from t = " << history_.times().first()
+        << " to " << history_.times().last() << " s" << endl;
 }
 
 
@@ -576,6 +641,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
+    fireDict_(),
+    coolingDict_(),
     history_(),
     file_(),
     dictName_(iF.objectPath()),
@@ -602,11 +669,20 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(0),
     beforeStart_("hold"),
     afterEnd_("hold"),
+    fireDict_(),
+    coolingDict_(),
     history_(),
     file_(),
     dictName_(dict.name()),
     dictLine_(dict.startLineNumber())
 {
+    if (dict.found("fire", keyType::LITERAL))
+    {
+        readLaw(dict);
+        fvPatchScalarField::operator=(temperature(db().time().value()));
+        return;
+    }
+
     readKeywords(dict);
 
     const bool hasFile = dict.found("file", keyType::LITERAL);
@@ -661,6 +737,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -687,6 +765,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -712,6 +792,8 @@ Foam::fireTemperatureFvPatchScalarField::fireTemperatureFvPatchScalarField
     timeOffset_(ptf.timeOffset_),
     beforeStart_(ptf.beforeStart_),
     afterEnd_(ptf.afterEnd_),
+    fireDict_(ptf.fireDict_),
+    coolingDict_(ptf.coolingDict_),
     history_(ptf.history_),
     file_(ptf.file_),
     dictName_(ptf.dictName_),
@@ -788,6 +870,19 @@ void Foam::fireTemperatureFvPatchScalarField::write(Ostream& os) const
 
     // Enough digits to read back what was given
     const int oldPrecision = os.precision(max(os.precision(), 15));
+
+    if (fireDict_.size())
+    {
+        os.beginBlock("fire");
+        fireDict_.write(os, false);
+        os.endBlock();
+        os.beginBlock("cooling");
+        coolingDict_.write(os, false);
+        os.endBlock();
+        os.precision(oldPrecision);
+        writeEntry("value", os);
+        return;
+    }
 
     if (file_.size())
     {

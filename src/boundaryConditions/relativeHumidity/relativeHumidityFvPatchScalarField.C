@@ -31,13 +31,8 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
 )
 :
     fixedValueFvPatchScalarField(p, iF, dict, false),
-    relativeHumidity_(Function1<scalar>::New("relativeHumidity", dict)),
-    airTemperature_
-    (
-        dict.found("airTemperature")
-      ? Function1<scalar>::New("airTemperature", dict)
-      : autoPtr<Function1<scalar>>()
-    ),
+    relativeHumidity_(),
+    airTemperature_(),
     TName_(dict.getOrDefault<word>("T", "T"))
 {
     // Unknown keywords (a misspelt 'airTemperature' would silently take
@@ -56,6 +51,14 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
             "boundary condition " + type() + " on patch '" + p.name()
           + "' of field " + iF.name()
         );
+    }
+
+    // (after the keyword check: a misspelt 'relativeHumidity' is named
+    // with the nearest valid keyword, not as a missing entry)
+    relativeHumidity_ = Function1<scalar>::New("relativeHumidity", dict);
+    if (dict.found("airTemperature"))
+    {
+        airTemperature_ = Function1<scalar>::New("airTemperature", dict);
     }
 
     relativeHumidity(&dict);

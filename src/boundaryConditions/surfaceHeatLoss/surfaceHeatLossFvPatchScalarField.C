@@ -151,10 +151,10 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
 )
 :
     mixedFvPatchScalarField(p, iF),
-    h_(Function1<scalar>::New("h", dict)),
-    Tair_(Function1<scalar>::New("Tair", dict)),
+    h_(),
+    Tair_(),
     Tsky_(),
-    emissivity_(dict.getOrDefault<scalar>("emissivity", 0)),
+    emissivity_(0),
     kappaName_(dict.getOrDefault<word>("kappa", "kappa")),
     dictName_(dict.name())
 {
@@ -179,12 +179,23 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
         );
     }
 
+    // (after the keyword check: a misspelt 'Tair' is named with the
+    // nearest valid keyword, not as a missing entry)
+    h_ = Function1<scalar>::New("h", dict);
+    Tair_ = Function1<scalar>::New("Tair", dict);
     if (dict.found("Tsky"))
     {
         Tsky_ = Function1<scalar>::New("Tsky", dict);
     }
-
+    // (a finite number, then its range in the words of this condition)
+    emissivity_ =
+        checkedRead::getOrDefault
+        (
+            dict, "emissivity", dimless, 0,
+            validRange{-GREAT, GREAT, true, true}
+        ).value();
     checkRange("emissivity", emissivity_, checkedRead::closed(0, 1), false);
+
 
     // Range of the Function1s at the start time
     scalar h, Tair, Tsky;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "thermocouples.H"
+#include "checkedRead.H"
 #include "volFields.H"
 #include "interpolation.H"
 #include "IFstream.H"
@@ -495,6 +496,19 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
         fieldName_ + ' ' + interpolationScheme_ + ' ' + unit_
     );
 
+    // Unknown keywords (a misspelt 'unit' would silently give C)
+    {
+        wordList known(checkedRead::functionObjectKeywords());
+        known.append
+        (
+            wordList({"file", "field", "interpolationScheme", "unit", "precision"})
+        );
+        checkedRead::checkKeywords
+        (
+            dict, known, "function object " + name() + " (thermocouples)"
+        );
+    }
+
     // Settings
     fileName file(dict.get<fileName>("file"));
     file.expand();
@@ -534,6 +548,13 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
             << "' is neither C nor K" << exit(FatalIOError);
     }
 
+    if (dict.found("precision"))
+    {
+        checkedRead::checkNumbers
+        (
+            dict, "precision", "an integer in [1, 17] (significant digits)"
+        );
+    }
     precision_ = dict.getOrDefault<label>("precision", 10);
     if (precision_ < 1 || precision_ > 17)
     {

@@ -25,12 +25,11 @@ Foam::balanceMonitor::balanceMonitor
     const dictionary& nonlinearDict =
         mesh.solutionDict().optionalSubDict("nonlinear");
     tolerance_ =
-        nonlinearDict.getOrDefault<scalar>("balanceTolerance", 1e-6);
-    checkedRead::check
-    (
-        nonlinearDict, "balanceTolerance", tolerance_,
-        validRange{0, std::numeric_limits<scalar>::infinity(), true, true}
-    );
+        checkedRead::getOrDefault
+        (
+            nonlinearDict, "balanceTolerance", dimless, 1e-6,
+            checkedRead::positive()
+        ).value();
     strict_ = nonlinearDict.getOrDefault<bool>("strictBalance", defaultStrict);
 }
 

@@ -45,7 +45,8 @@ namespace
 Foam::fireHistory::fireHistory
 (
     const dictionary& fireDict,
-    const dictionary& coolingDict
+    const dictionary& coolingDict,
+    const wordList& fireKeywords
 )
 :
     fireTemperature_(readCelsius(fireDict, "temperature")),
@@ -73,11 +74,11 @@ Foam::fireHistory::fireHistory
     description_()
 {
     // Unknown keywords (a misspelt 'rampTime' would silently give none)
-    checkedRead::checkKeywords
-    (
-        fireDict,
-        wordList({"patch", "temperature", "rampTime", "rampStartTemperature"})
-    );
+    {
+        wordList known({"temperature", "rampTime", "rampStartTemperature"});
+        known.append(fireKeywords);
+        checkedRead::checkKeywords(fireDict, known, "fire history: fire");
+    }
     if (coolingType_ == "exponential")
     {
         checkedRead::checkKeywords
@@ -113,6 +114,12 @@ Foam::fireHistory::fireHistory
     }
     else if (coolingType_ == "table")
     {
+        checkedRead::checkNumbers
+        (
+            coolingDict, "table",
+            "(time after extinction [h], T [C]) pairs, times > 0 and"
+            " strictly increasing, e.g. ((0.5 300) (2 100) (6 20))"
+        );
         coolingTable_ =
             coolingDict.get<List<Tuple2<scalar, scalar>>>("table");
 
