@@ -104,28 +104,13 @@ void expectError
     }
 
     std::string missing;
-    if (!thrown) missing += " (no FatalIOError)";
     if (thrown && file != f) missing += " file '" + file + "'";
     if (thrown && at != line)
     {
         missing += " line " + std::to_string(at) + " not "
             + std::to_string(line);
     }
-    for (const char* needle : needles)
-    {
-        if (message.find(needle) == std::string::npos)
-        {
-            missing += std::string(" '") + needle + "'";
-        }
-    }
-    std::string first = message.substr(0, message.find('\n'));
-    if (first.size() > 110) first = first.substr(0, 110) + "...";
-
-    ++nChecks;
-    if (missing.size()) ++nFailed;
-    Info<< (missing.empty() ? "ok   " : "FAIL ") << "error " << name.c_str()
-        << (missing.size() ? ": missing" + missing : std::string()).c_str()
-        << " | " << first.c_str() << endl;
+    checkErrorMessage(name, thrown, message, needles, missing);
     if (missing.size())
     {
         Info<< "    message: " << message.c_str() << endl;

@@ -123,26 +123,11 @@ void expectError
     }
     FatalError.dontThrowExceptions();
 
-    bool found = thrown;
-    std::string missing;
-    for (const char* needle : needles)
-    {
-        if (message.find(needle) == std::string::npos)
-        {
-            found = false;
-            missing += std::string(" '") + needle + "'";
-        }
-    }
-    std::string firstLine = message.substr(0, message.find('\n'));
-    if (firstLine.size() > 90) firstLine = firstLine.substr(0, 90) + "...";
-
-    ++nChecks;
-    if (!found) ++nFailed;
-    Info<< (found ? "ok   " : "FAIL ") << name.c_str() << ": "
-        << (thrown ? "FatalError" : "no error, value ") ;
-    if (!thrown) Info<< value;
-    Info<< (missing.size() ? " missing" + missing : std::string()).c_str()
-        << " | " << firstLine.c_str() << endl;
+    checkErrorMessage
+    (
+        name, thrown, message, needles,
+        thrown ? std::string() : " value " + std::to_string(value)
+    );
 }
 
 
@@ -1386,26 +1371,11 @@ void expectIOError
         message = err.message();
     }
 
-    bool found = thrown;
-    std::string missing;
-    for (const char* needle : needles)
-    {
-        if (message.find(needle) == std::string::npos)
-        {
-            found = false;
-            missing += std::string(" '") + needle + "'";
-        }
-    }
-
-    std::string firstLine = message.substr(0, message.find('\n'));
-    if (firstLine.size() > 70) firstLine = firstLine.substr(0, 70) + "...";
-
-    ++nChecks;
-    if (!found) ++nFailed;
-    Info<< (found ? "ok   " : "FAIL ") << name.c_str() << ": "
-        << (thrown ? "FatalIOError" : other ? "FatalError (not IO)" : "none")
-        << (missing.size() ? " missing" + missing : std::string()).c_str()
-        << " | " << firstLine.c_str() << endl;
+    checkErrorMessage
+    (
+        name, thrown || other, message, needles,
+        other ? " (a FatalError, not a FatalIOError)" : std::string()
+    );
 }
 
 

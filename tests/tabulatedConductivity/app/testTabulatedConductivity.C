@@ -94,23 +94,7 @@ void expectError
         }
     }
 
-    std::string missing;
-    if (!thrown) missing += " (no error)";
-    for (const char* needle : needles)
-    {
-        if (message.find(needle) == std::string::npos)
-        {
-            missing += std::string(" '") + needle + "'";
-        }
-    }
-    std::string first = message.substr(0, message.find('\n'));
-    if (first.size() > 110) first = first.substr(0, 110) + "...";
-
-    ++nChecks;
-    if (missing.size()) ++nFailed;
-    Info<< (missing.empty() ? "ok   " : "FAIL ") << "error " << name.c_str()
-        << (missing.size() ? ": missing" + missing : std::string()).c_str()
-        << " | " << first.c_str() << endl;
+    checkErrorMessage(name, thrown, message, needles);
 }
 
 
