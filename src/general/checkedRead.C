@@ -628,11 +628,9 @@ Foam::label Foam::checkedRead::getLabel
     }
     if (value < lower || value > upper)
     {
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
-            line > 0 ? line : -1, -1
-        )   << "Keyword '" << keyword << "' = " << value
+        // (as check: the dictionary's lines)
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' = " << value
             << " is outside its valid range " << range.c_str()
             << " in dictionary " << dict.name() << nl
             << exit(FatalIOError);
