@@ -5,6 +5,7 @@
 #include "adaptiveTimeStepControls.H"
 #include "checkedRead.H"
 #include "OStringStream.H"
+#include "IFstream.H"
 #include <limits>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -44,6 +45,35 @@ Foam::adaptiveTimeStepControls::adaptiveTimeStepControls
     maxIter_(defaultMaxIter)
 {
     read();
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * //
+
+void Foam::adaptiveTimeStepControls::checkTimeEntries(const argList& args)
+{
+    const fileName file
+    (
+        args.rootPath()/args.globalCaseName()/"system"/"controlDict"
+    );
+    IFstream is(file);
+    if (!is.good())
+    {
+        return;     // Time reports a missing controlDict
+    }
+    const dictionary controlDict(is);
+
+    const validRange finite
+    {
+        -std::numeric_limits<scalar>::infinity(),
+        std::numeric_limits<scalar>::infinity(), true, true
+    };
+    checkedRead::get(controlDict, "deltaT", dimTime, above(0));
+    checkedRead::get(controlDict, "endTime", dimTime, finite);
+    if (controlDict.found("startTime"))
+    {
+        checkedRead::get(controlDict, "startTime", dimTime, finite);
+    }
 }
 
 
