@@ -19,6 +19,28 @@
 namespace
 {
 
+//- The value of an entry as written, for error messages: its tokens, or
+//  "a sub-dictionary"
+Foam::string entryText(const Foam::entry& e)
+{
+    using namespace Foam;
+    OStringStream os;
+    if (e.isDict())
+    {
+        os  << "a sub-dictionary";
+    }
+    else
+    {
+        const tokenList& tokens = static_cast<const tokenList&>(e.stream());
+        forAll(tokens, i)
+        {
+            os  << (i ? " " : "") << tokens[i];
+        }
+    }
+    return os.str();
+}
+
+
 //- FatalIOError: keyword missing from dict, with what was expected and a
 //  near miss among the keywords given (a misspelt keyword) if there is one
 void missingKeyword
@@ -482,23 +504,11 @@ Foam::dimensionedScalar Foam::checkedRead::get
          || !std::isfinite(tokens.last().number())
         )
         {
-            OStringStream os;
-            if (e.isDict())
-            {
-                os  << "a sub-dictionary";
-            }
-            else
-            {
-                forAll(tokens, i)
-                {
-                    os  << (i ? " " : "") << tokens[i];
-                }
-            }
             FatalIOError
             (
                 FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
                 e.startLineNumber(), -1
-            )   << "Keyword '" << keyword << "' = " << os.str().c_str()
+            )   << "Keyword '" << keyword << "' = " << entryText(e).c_str()
                 << " in dictionary " << dict.name()
                 << " is not a finite number (nan and inf are not accepted):"
                 << " expected a value"
@@ -605,23 +615,11 @@ Foam::label Foam::checkedRead::getLabel
     const label line = eptr->startLineNumber();
     if (!whole)
     {
-        OStringStream os;
-        if (eptr->isDict())
-        {
-            os  << "a sub-dictionary";
-        }
-        else
-        {
-            forAll(tokens, i)
-            {
-                os  << (i ? " " : "") << tokens[i];
-            }
-        }
         FatalIOError
         (
             FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
             line > 0 ? line : -1, -1
-        )   << "Keyword '" << keyword << "' = " << os.str().c_str()
+        )   << "Keyword '" << keyword << "' = " << entryText(*eptr).c_str()
             << " in dictionary " << dict.name()
             << " is not a whole number: expected a whole number in the range "
             << range.c_str() << nl << exit(FatalIOError);
