@@ -19,6 +19,28 @@
 namespace
 {
 
+//- The value of an entry as written, for error messages: its tokens, or
+//  "a sub-dictionary"
+Foam::string entryText(const Foam::entry& e)
+{
+    using namespace Foam;
+    OStringStream os;
+    if (e.isDict())
+    {
+        os  << "a sub-dictionary";
+    }
+    else
+    {
+        const tokenList& tokens = static_cast<const tokenList&>(e.stream());
+        forAll(tokens, i)
+        {
+            os  << (i ? " " : "") << tokens[i];
+        }
+    }
+    return os.str();
+}
+
+
 //- FatalIOError: keyword missing from dict, with what was expected and a
 //  near miss among the keywords given (a misspelt keyword) if there is one
 void missingKeyword
@@ -482,23 +504,11 @@ Foam::dimensionedScalar Foam::checkedRead::get
          || !std::isfinite(tokens.last().number())
         )
         {
-            OStringStream os;
-            if (e.isDict())
-            {
-                os  << "a sub-dictionary";
-            }
-            else
-            {
-                forAll(tokens, i)
-                {
-                    os  << (i ? " " : "") << tokens[i];
-                }
-            }
             FatalIOError
             (
                 FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
                 e.startLineNumber(), -1
-            )   << "Keyword '" << keyword << "' = " << os.str().c_str()
+            )   << "Keyword '" << keyword << "' = " << entryText(e).c_str()
                 << " in dictionary " << dict.name()
                 << " is not a finite number (nan and inf are not accepted):"
                 << " expected a value"
@@ -555,5 +565,93 @@ Foam::dimensionedScalar Foam::checkedRead::getOrDefault
     }
     return get(dict, keyword, dims, range);
 }
+
+Foam::label Foam::checkedRead::getLabel
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label lower,
+    const label upper
+)
+{
+    OStringStream rangeOs;
+    rangeOs << "[" << lower << ", ";
+    if (upper == labelMax) rangeOs << "inf)"; else rangeOs << upper << "]";
+    const string range(rangeOs.str());
+
+    const entry* eptr = dict.findEntry(keyword, keyType::REGEX);
+    if (!eptr)
+    {
+        missingKeyword(dict, keyword, "a whole number in the range " + range);
+    }
+
+    tokenList tokens;
+    if (eptr->isStream())
+    {
+        tokens = static_cast<const tokenList&>(eptr->stream());
+    }
+
+    // A whole number: a label token, or a finite number without fraction
+    // (1e3) within the range of label
+    bool whole = !eptr->isDict() && tokens.size() == 1;
+    label value = 0;
+    if (whole && tokens[0].isLabel())
+    {
+        value = tokens[0].labelToken();
+    }
+    else if (whole && tokens[0].isNumber())
+    {
+        const scalar x = tokens[0].number();
+        whole =
+            std::isfinite(x) && x == std::floor(x)
+         && x >= scalar(labelMin) && x <= scalar(labelMax);
+        value = whole ? label(x) : 0;
+    }
+    else
+    {
+        whole = false;
+    }
+
+    const label line = eptr->startLineNumber();
+    if (!whole)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+            line > 0 ? line : -1, -1
+        )   << "Keyword '" << keyword << "' = " << entryText(*eptr).c_str()
+            << " in dictionary " << dict.name()
+            << " is not a whole number: expected a whole number in the range "
+            << range.c_str() << nl << exit(FatalIOError);
+    }
+    if (value < lower || value > upper)
+    {
+        // (as check: the dictionary's lines)
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' = " << value
+            << " is outside its valid range " << range.c_str()
+            << " in dictionary " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+Foam::label Foam::checkedRead::getLabelOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label deflt,
+    const label lower,
+    const label upper
+)
+{
+    if (!dict.found(keyword))
+    {
+        return deflt;
+    }
+    return getLabel(dict, keyword, lower, upper);
+}
+
 
 // ************************************************************************* //

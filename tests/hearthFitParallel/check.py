@@ -68,7 +68,7 @@ cp = float(re.search(r'cost \(weighted residual sum of squares\) (\S+),',
 c.le('cost |parallel - serial|/serial (%.10g, %.10g)' % (cp, cs),
      abs(cp - cs)/cs, 1e-8)
 
-for name, msg in (('nProcs0', 'nProcs 0: valid is >= 1'),
+for name, msg in (('nProcs0', r"Keyword 'nProcs' = 0 is outside its valid range \[1, inf\)"),
                   ('nProcs3', 'nProcs 3 but .*decomposeParDict"? has '
                               'numberOfSubdomains 2')):
     with open('bad/log.' + name) as f:

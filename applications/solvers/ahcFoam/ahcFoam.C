@@ -57,6 +57,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
+    adaptiveTimeStepControls::checkTimeEntries(args);
     #include "createTime.H"
     #include "createMesh.H"
     #include "createControls.H"

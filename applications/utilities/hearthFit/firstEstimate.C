@@ -21,7 +21,7 @@ void Foam::firstEstimate
     const bool resume
 )
 {
-        checkedRead::checkKeywords
+    checkedRead::checkKeywords
     (
         fd,
         wordList
@@ -30,13 +30,26 @@ void Foam::firstEstimate
             "surfaceZ", "timeOrigin"
         })
     );
-    const scalar T0 = fd.get<scalar>("surfaceTemperature");
-    const scalar Ti = fd.get<scalar>("initialTemperature");
-    const scalar zSurf = fd.lookupOrDefault<scalar>("surfaceZ", 0);
-    const scalar tOrigin = fd.lookupOrDefault<scalar>
-    (
-        "timeOrigin", runTime.startTime().value()
-    );
+    // Temperatures in degrees Celsius, above absolute zero; z and t finite
+    const validRange celsius{-273.15, GREAT, true, true};
+    const validRange finite{-GREAT, GREAT, true, true};
+    const scalar T0 =
+        checkedRead::get
+        (
+            fd, "surfaceTemperature", dimTemperature, celsius
+        ).value();
+    const scalar Ti =
+        checkedRead::get
+        (
+            fd, "initialTemperature", dimTemperature, celsius
+        ).value();
+    const scalar zSurf =
+        checkedRead::getOrDefault(fd, "surfaceZ", dimLength, 0, finite).value();
+    const scalar tOrigin =
+        checkedRead::getOrDefault
+        (
+            fd, "timeOrigin", dimTime, runTime.startTime().value(), finite
+        ).value();
     const wordList feSensors
     (
         fd.found("sensors") ? fd.get<wordList>("sensors") : obs.sensors

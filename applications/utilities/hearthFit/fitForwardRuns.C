@@ -41,14 +41,8 @@ Foam::fitForwardRuns::fitForwardRuns
     );
     solver =
         fwdDict.lookupOrDefault<fileName>("solver", fileName("ahcFoam")).expand();
-    nProcs = fwdDict.getOrDefault<label>("nProcs", 1);
-    if (nProcs < 1)
-    {
-        FatalIOErrorInFunction(fwdDict)
-            << "forwardModel: nProcs " << nProcs << ": valid is >= 1"
-            << " (1: serial forward runs, N > 1: each run on N MPI ranks)"
-            << exit(FatalIOError);
-    }
+    // 1: serial forward runs, N > 1: each run on N MPI ranks
+    nProcs = checkedRead::getLabelOrDefault(fwdDict, "nProcs", 1, 1);
     // Parallel forward runs: each scratch copy is decomposed (decomposePar,
     // system/decomposeParDict of the case) and run as
     // '<mpirun> -np N <solver> -parallel -case <copy>'
@@ -57,7 +51,7 @@ Foam::fitForwardRuns::fitForwardRuns
         fwdDict, nProcs, runTime.path(), wordList({"decomposePar"})
     );
     maxConcurrent =
-        max(1, fwdDict.lookupOrDefault<label>("maxConcurrentRuns", 1));
+        checkedRead::getLabelOrDefault(fwdDict, "maxConcurrentRuns", 1, 1);
     foName = fwdDict.lookupOrDefault<word>("functionObject", "thermocouples");
     {
         const dictionary* fos = runTime.controlDict().findDict("functions");

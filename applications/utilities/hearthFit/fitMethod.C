@@ -47,26 +47,53 @@ hearthFit::FitOptions Foam::readFitMethod(const dictionary& fitDict)
             FatalIOErrorInFunction(methodDict) << "difference " << diff
                 << ": valid are forward, central" << exit(FatalIOError);
         }
+        // Every number finite and in its range (FatalIOError naming the
+        // keyword and the range; levenbergMarquardt's own checks would
+        // throw without the file)
+        const validRange fraction{0, 1, true, true};
         const scalar noise =
-            methodDict.lookupOrDefault<scalar>("solverNoise", 1e-6);
-        opts.hRel = methodDict.lookupOrDefault<scalar>
-        (
-            "relativeStep",
-            hearthFit::levenbergMarquardt::recommendedRelativeStep
+            checkedRead::getOrDefault
             (
-                noise, opts.difference
-            )
-        );
-        opts.tolStep = methodDict.lookupOrDefault<scalar>("tolStep", 1e-6);
-        opts.tolGradient =
-            methodDict.lookupOrDefault<scalar>("tolGradient", 1e-6);
-        opts.tolCost = methodDict.lookupOrDefault<scalar>("tolCost", 1e-10);
+                methodDict, "solverNoise", dimless, 1e-6, fraction
+            ).value();
+        opts.hRel =
+            checkedRead::getOrDefault
+            (
+                methodDict, "relativeStep", dimless,
+                hearthFit::levenbergMarquardt::recommendedRelativeStep
+                (
+                    noise, opts.difference
+                ),
+                validRange{0, 0.5, true, true}
+            ).value();
+        auto tolerance = [&](const word& key, const scalar deflt)
+        {
+            return
+                checkedRead::getOrDefault
+                (
+                    methodDict, key, dimless, deflt,
+                    checkedRead::nonNegative()
+                ).value();
+        };
+        opts.tolStep = tolerance("tolStep", 1e-6);
+        opts.tolGradient = tolerance("tolGradient", 1e-6);
+        opts.tolCost = tolerance("tolCost", 1e-10);
         opts.maxIterations =
-            methodDict.lookupOrDefault<label>("maxIterations", 30);
+            checkedRead::getLabelOrDefault
+            (
+                methodDict, "maxIterations", 30, 1
+            );
         opts.initialDamping =
-            methodDict.lookupOrDefault<scalar>("initialDamping", 1e-3);
+            checkedRead::getOrDefault
+            (
+                methodDict, "initialDamping", dimless, 1e-3,
+                validRange{0, opts.maxDamping, true, true}
+            ).value();
         opts.confidence =
-            methodDict.lookupOrDefault<scalar>("confidence", 0.95);
+            checkedRead::getOrDefault
+            (
+                methodDict, "confidence", dimless, 0.95, fraction
+            ).value();
     }
 
     return opts;

@@ -167,14 +167,24 @@ Foam::fitObservations::fitObservations
     scalar t0 = -GREAT, t1 = GREAT;
     if (obsDict.found("timeWindow"))
     {
-        const Pair<scalar> w(obsDict.get<Pair<scalar>>("timeWindow"));
-        t0 = secondsPer[timeUnit]*w.first();
-        t1 = secondsPer[timeUnit]*w.second();
-        if (!(t0 < t1))
+        const scalarList w
+        (
+            checkedRead::getList
+            (
+                obsDict, "timeWindow",
+                validRange{-GREAT, GREAT, false, false},
+                "(start end): two finite times, start < end"
+            )
+        );
+        if (w.size() != 2 || !(w[0] < w[1]))
         {
-            FatalIOErrorInFunction(obsDict) << "timeWindow: need start < end"
-                << exit(FatalIOError);
+            FatalIOErrorInFunction(obsDict)
+                << "Keyword 'timeWindow' = " << w << " in dictionary "
+                << obsDict.name() << ": expected (start end), two finite"
+                << " times with start < end" << exit(FatalIOError);
         }
+        t0 = secondsPer[timeUnit]*w[0];
+        t1 = secondsPer[timeUnit]*w[1];
     }
     if (obsDict.found("sensors"))
     {
@@ -188,7 +198,12 @@ Foam::fitObservations::fitObservations
     sigma.assign(sensors.size(), 1);
     weight.assign(sensors.size(), 1);
     sigmaGiven = obsDict.found("sigma") || obsDict.found("sigmas");
-    const scalar sigmaAll = obsDict.lookupOrDefault<scalar>("sigma", 1);
+    // Measurement standard deviation [K] and weights: finite, > 0
+    const scalar sigmaAll =
+        checkedRead::getOrDefault
+        (
+            obsDict, "sigma", dimTemperature, 1, checkedRead::positive()
+        ).value();
     const dictionary* sigmasDict = obsDict.findDict("sigmas");
     const dictionary* weightsDict = obsDict.findDict("weights");
     // Their keywords are the observed sensors (a misspelt name would
@@ -214,9 +229,17 @@ Foam::fitObservations::fitObservations
         }
         sigma[si] = sigmaAll;
         if (sigmasDict) sigma[si] =
-            sigmasDict->lookupOrDefault<scalar>(sensors[si], sigmaAll);
+            checkedRead::getOrDefault
+            (
+                *sigmasDict, sensors[si], dimTemperature, sigmaAll,
+                checkedRead::positive()
+            ).value();
         if (weightsDict) weight[si] =
-            weightsDict->lookupOrDefault<scalar>(sensors[si], 1);
+            checkedRead::getOrDefault
+            (
+                *weightsDict, sensors[si], dimless, 1,
+                checkedRead::positive()
+            ).value();
         if (!(sigma[si] > 0) || !(weight[si] > 0))
         {
             FatalIOErrorInFunction(obsDict)

@@ -68,7 +68,11 @@ Foam::fitParameters::fitParameters
         {
             s.file = d.get<fileName>("file");
             s.entry = d.get<fileName>("entry");
-            s.scale = d.lookupOrDefault<scalar>("scale", 1);
+            s.scale =
+                checkedRead::getOrDefault
+                (
+                    d, "scale", dimless, 1, checkedRead::positive()
+                ).value();
         }
 
         double factor = 0;
@@ -81,22 +85,26 @@ Foam::fitParameters::fitParameters
                     << "parameter " << s.name << ": initialFrom " << from
                     << ": valid is laloyMassard" << exit(FatalIOError);
             }
-            factor = d.lookupOrDefault<scalar>("initialFactor", 1);
-            if (!(factor > 0))
-            {
-                FatalIOErrorInFunction(d)
-                    << "parameter " << s.name << ": initialFactor must be"
-                    << " > 0" << exit(FatalIOError);
-            }
+            factor =
+                checkedRead::getOrDefault
+                (
+                    d, "initialFactor", dimless, 1, checkedRead::positive()
+                ).value();
         }
         initialFactor.push_back(factor);
 
         hearthFit::FitParameter p;
         p.name = s.name;
-        p.initial = d.get<scalar>("initial");
-        p.lower = d.get<scalar>("min");
-        p.upper = d.get<scalar>("max");
-        p.typical = d.lookupOrDefault<scalar>("typical", 0);
+        // Finite numbers (the parameter's own units, no dimensions)
+        const validRange finite{-GREAT, GREAT, true, true};
+        p.initial = checkedRead::get(d, "initial", dimless, finite).value();
+        p.lower = checkedRead::get(d, "min", dimless, finite).value();
+        p.upper = checkedRead::get(d, "max", dimless, finite).value();
+        p.typical =
+            checkedRead::getOrDefault
+            (
+                d, "typical", dimless, 0, checkedRead::nonNegative()
+            ).value();
         const word tr(d.lookupOrDefault<word>("transform", "linear"));
         if (tr == "log") p.transform = hearthFit::Transform::log;
         else if (tr != "linear")

@@ -736,8 +736,7 @@ int main(int argc, char *argv[])
         {
             checkedRead::checkNumbers(id, "M", "an integer in [2, 500]");
         }
-        const label M = id.getOrDefault<label>("M", par.M);
-        checkedRead::check(id, "M", M, validRange{2, 500, false, false});
+        const label M = checkedRead::getLabelOrDefault(id, "M", par.M, 2, 500);
         par.M = M;
         par.tolerance =
             checkedRead::getOrDefault

@@ -147,16 +147,8 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
     // Columns
     auto readColumn = [&](const word& key, const label deflt) -> label
     {
-        const label c = dict.getOrDefault<label>(key, deflt);
-        if (c < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword '" << key << "' = " << c << where().c_str()
-                << " is outside its valid range [0, inf)"
-                << " (columns count from 0)" << nl
-                << exit(FatalIOError);
-        }
-        return c;
+        // Columns count from 0
+        return checkedRead::getLabelOrDefault(dict, key, deflt, 0);
     };
     timeColumn_ = readColumn("timeColumn", 0);
     temperatureColumn_ = readColumn("temperatureColumn", 1);
@@ -222,15 +214,8 @@ void Foam::fireTemperatureFvPatchScalarField::readKeywords
     headerLines_ = -1;
     if (dict.found("headerLines"))
     {
-        headerLines_ = dict.get<label>("headerLines");
-        if (headerLines_ < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword 'headerLines' = " << headerLines_
-                << where().c_str() << " is outside its valid range [0, inf)"
-                << " (omit it to skip the non-numeric lines at the top)"
-                << nl << exit(FatalIOError);
-        }
+        // (omit it to skip the non-numeric lines at the top)
+        headerLines_ = checkedRead::getLabel(dict, "headerLines", 0);
     }
 
     // Choices

@@ -286,26 +286,20 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
         (
             "subPreconditioner", dict, subPreconditionerType::ilu
         );
-    const label iluLevels = dict.getOrDefault<label>("iluLevels", 0);
-    checkedRead::check
-    (
-        dict, "iluLevels", iluLevels, checkedRead::closed(0, 10)
-    );
-    const label asmOverlap = dict.getOrDefault<label>("asmOverlap", 1);
-    checkedRead::check
-    (
-        dict, "asmOverlap", asmOverlap, checkedRead::closed(0, 10)
-    );
-    const scalar tolerance = dict.getOrDefault<scalar>("tolerance", 1e-12);
-    checkedRead::check
-    (
-        dict, "tolerance", tolerance, checkedRead::nonNegative()
-    );
-    const scalar relTol = dict.getOrDefault<scalar>("relTol", 1e-10);
-    checkedRead::check
-    (
-        dict, "relTol", relTol, checkedRead::closedOpen(0, 1)
-    );
+    const label iluLevels =
+        checkedRead::getLabelOrDefault(dict, "iluLevels", 0, 0, 10);
+    const label asmOverlap =
+        checkedRead::getLabelOrDefault(dict, "asmOverlap", 1, 0, 10);
+    const scalar tolerance =
+        checkedRead::getOrDefault
+        (
+            dict, "tolerance", dimless, 1e-12, checkedRead::nonNegative()
+        ).value();
+    const scalar relTol =
+        checkedRead::getOrDefault
+        (
+            dict, "relTol", dimless, 1e-10, checkedRead::closedOpen(0, 1)
+        ).value();
     if (tolerance <= 0 && relTol <= 0)
     {
         FatalIOErrorInFunction(dict)
@@ -313,16 +307,10 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
             << " never stop; give tolerance > 0 or relTol in (0, 1)"
             << exit(FatalIOError);
     }
-    const label maxIter = dict.getOrDefault<label>("maxIter", 1000);
-    checkedRead::check
-    (
-        dict, "maxIter", maxIter, checkedRead::closed(1, labelMax)
-    );
-    const label restart = dict.getOrDefault<label>("gmresRestart", 50);
-    checkedRead::check
-    (
-        dict, "gmresRestart", restart, checkedRead::closed(1, 10000)
-    );
+    const label maxIter =
+        checkedRead::getLabelOrDefault(dict, "maxIter", 1000, 1);
+    const label restart =
+        checkedRead::getLabelOrDefault(dict, "gmresRestart", 50, 1, 10000);
     const matrixType mType =
         matrixTypeNames.getOrDefault("matrix", dict, matrixType::baij);
     if (pc == preconditionerType::fieldsplit && mType == matrixType::baij)

@@ -5,6 +5,7 @@
 #include "tabulated.H"
 #include "addToRunTimeSelectionTable.H"
 #include "numericTable.H"
+#include "checkedRead.H"
 #include "Tuple2.H"
 #include "OSspecific.H"
 
@@ -43,9 +44,11 @@ void Foam::effectiveConductivityModels::tabulated::readFile
     }
     file.clean();
 
+    // Columns count from 0
     const label alphaLColumn =
-        coeffs.getOrDefault<label>("alphaLColumn", 0);
-    const label kappaColumn = coeffs.getOrDefault<label>("kappaColumn", 1);
+        checkedRead::getLabelOrDefault(coeffs, "alphaLColumn", 0, 0);
+    const label kappaColumn =
+        checkedRead::getLabelOrDefault(coeffs, "kappaColumn", 1, 0);
     if (alphaLColumn < 0 || kappaColumn < 0 || alphaLColumn == kappaColumn)
     {
         FatalIOErrorInFunction(coeffs)

@@ -555,7 +555,7 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
             dict, "precision", "an integer in [1, 17] (significant digits)"
         );
     }
-    precision_ = dict.getOrDefault<label>("precision", 10);
+    precision_ = checkedRead::getLabelOrDefault(dict, "precision", 10, 1, 17);
     if (precision_ < 1 || precision_ > 17)
     {
         FatalIOErrorInFunction(dict)

@@ -4,6 +4,8 @@
 
 #include "adaptiveTimeStepControls.H"
 #include "checkedRead.H"
+#include "OStringStream.H"
+#include "IFstream.H"
 #include <limits>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -46,6 +48,35 @@ Foam::adaptiveTimeStepControls::adaptiveTimeStepControls
 }
 
 
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * //
+
+void Foam::adaptiveTimeStepControls::checkTimeEntries(const argList& args)
+{
+    const fileName file
+    (
+        args.rootPath()/args.globalCaseName()/"system"/"controlDict"
+    );
+    IFstream is(file);
+    if (!is.good())
+    {
+        return;     // Time reports a missing controlDict
+    }
+    const dictionary controlDict(is);
+
+    const validRange finite
+    {
+        -std::numeric_limits<scalar>::infinity(),
+        std::numeric_limits<scalar>::infinity(), true, true
+    };
+    checkedRead::get(controlDict, "deltaT", dimTime, above(0));
+    checkedRead::get(controlDict, "endTime", dimTime, finite);
+    if (controlDict.found("startTime"))
+    {
+        checkedRead::get(controlDict, "startTime", dimTime, finite);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::adaptiveTimeStepControls::read()
@@ -55,24 +86,32 @@ void Foam::adaptiveTimeStepControls::read()
 
     adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", true);
 
+    // Every number finite (nan, inf or a word: FatalIOError naming the
+    // keyword and its range) and in its range
+
     // The first step: the controlDict's entry, and the step the run starts
     // with (a restart takes it from its time directory)
-    checkedRead::check
-    (
-        controlDict, "deltaT", controlDict.get<scalar>("deltaT"),
-        above(0)
-    );
+    checkedRead::get(controlDict, "deltaT", dimTime, above(0));
     checkedRead::check
     (
         controlDict, "deltaT", runTime.deltaTValue(), above(0)
     );
 
-    maxDeltaT_ = controlDict.getOrDefault<scalar>("maxDeltaT", GREAT);
-    checkedRead::check
-    (
-        controlDict, "maxDeltaT", maxDeltaT_, above(0)
-    );
+    maxDeltaT_ =
+        checkedRead::getOrDefault
+        (
+            controlDict, "maxDeltaT", dimTime, GREAT, above(0)
+        ).value();
 
+    // (its range depends on maxDeltaT: a finite number first)
+    if (controlDict.found("minDeltaT"))
+    {
+        OStringStream expected;
+        expected
+            << "a time step [s] in the range (0, maxDeltaT = " << maxDeltaT_
+            << "]";
+        checkedRead::checkNumbers(controlDict, "minDeltaT", expected.str());
+    }
     minDeltaT_ = controlDict.getOrDefault<scalar>("minDeltaT", 1e-6);
     if (!(minDeltaT_ > 0 && minDeltaT_ <= maxDeltaT_))
     {
@@ -84,26 +123,18 @@ void Foam::adaptiveTimeStepControls::read()
     }
 
     maxDeltaTemperature_ =
-        controlDict.getOrDefault<scalar>
+        checkedRead::getOrDefault
         (
-            "maxDeltaTemperature", defaultMaxDeltaTemperature_
-        );
-    checkedRead::check
-    (
-        controlDict, "maxDeltaTemperature", maxDeltaTemperature_,
-        above(0)
-    );
+            controlDict, "maxDeltaTemperature", dimTemperature,
+            defaultMaxDeltaTemperature_, above(0)
+        ).value();
 
     maxDeltaTGrowth_ =
-        controlDict.getOrDefault<scalar>
+        checkedRead::getOrDefault
         (
-            "maxDeltaTGrowth", defaultMaxDeltaTGrowth_
-        );
-    checkedRead::check
-    (
-        controlDict, "maxDeltaTGrowth", maxDeltaTGrowth_,
-        above(1)
-    );
+            controlDict, "maxDeltaTGrowth", dimless,
+            defaultMaxDeltaTGrowth_, above(1)
+        ).value();
 
     // endTime after the start. A run restarted at its end (startFrom
     // latestTime, the last time directory at endTime) has nothing to do
@@ -126,15 +157,11 @@ void Foam::adaptiveTimeStepControls::read()
     // Nonlinear iterations (system/fvSolution)
     const dictionary& nonlinearDict =
         mesh_.solutionDict().optionalSubDict("nonlinear");
-    maxIter_ = nonlinearDict.getOrDefault<label>("maxIter", defaultMaxIter_);
-    if (maxIter_ < 1)
-    {
-        FatalIOErrorInFunction(nonlinearDict)
-            << "Keyword 'maxIter' = " << maxIter_
-            << " is outside its valid range [1, inf) in dictionary "
-            << nonlinearDict.name() << nl
-            << exit(FatalIOError);
-    }
+    maxIter_ =
+        checkedRead::getLabelOrDefault
+        (
+            nonlinearDict, "maxIter", defaultMaxIter_, 1
+        );
 }
 
 
