@@ -124,16 +124,15 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 
         // The Newton step
         dx = Zero;
+        // (a step short of the linear tolerance, e.g. at the round-off
+        // floor near convergence, is still a descent step: the
+        // convergence test above judges the iterate, not the step)
         const solverPerformance perf = system_.solve(dx, false);
-        if (!perf.converged())
+        if (verbose_ && !perf.converged())
         {
-            if (verbose_)
-            {
-                Info<< "    Newton " << iter << ": linear solver not"
-                    << " converged" << endl;
-            }
-            out.iterations = iter + 1;
-            return out;
+            Info<< "    Newton " << iter << ": linear solver stopped at "
+                << perf.finalResidual() << " after " << perf.nIterations()
+                << " iterations" << endl;
         }
 
         FixedList<scalar, 3> u(scalar(0));

@@ -42,9 +42,20 @@ Foam::pendularResidual::pendularResidual
     A0_(fvMesh_.nCells()),
     E0_(fvMesh_.nCells()),
     alphaGuess_(alphaGuess),
+    cache_(fvMesh_.nCells()),
+    cacheNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
     nbrAlphaGuess_()
 {
+    // No state cached yet: keys no unknown can take
+    for (auto& entries : cache_)
+    {
+        for (cacheEntry& e : entries)
+        {
+            e.x[0] = e.x[1] = e.x[2] = -GREAT;
+        }
+    }
+
     if (medium_.nonEquilibrium())
     {
         FatalErrorInFunction
@@ -135,7 +146,22 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     const scalar* x
 ) const
 {
-    return state(medium_.porosity()[celli], alphaGuess_[celli], x);
+    FixedList<cacheEntry, nCache>& entries = cache_[celli];
+    for (const cacheEntry& e : entries)
+    {
+        if (e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2])
+        {
+            return e.s;
+        }
+    }
+    label& next = cacheNext_[celli];
+    cacheEntry& e = entries[next];
+    next = (next + 1) % nCache;
+    e.x[0] = x[0];
+    e.x[1] = x[1];
+    e.x[2] = x[2];
+    e.s = state(medium_.porosity()[celli], alphaGuess_[celli], x);
+    return e.s;
 }
 
 
