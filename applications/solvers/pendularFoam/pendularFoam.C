@@ -42,8 +42,11 @@ Description
     first step):
         system/controlDict: adjustTimeStep, maxDeltaT, minDeltaT,
                             maxDeltaTemperature, maxDeltaTGrowth
-        system/fvSolution:  nonlinear { maxIter; TTol; pTol; WTol;
-                            balanceTolerance; strictBalance; }
+        system/fvSolution:  nonlinear { engine; maxIter; TTol; pTol;
+                            WTol; balanceTolerance; strictBalance; }
+    engine: segregated (default, the iterations above) or newton (Newton
+    on the coupled balances of a sub-step: src/coupled pendularNewton, its
+    linear solver set by fvSolution's optional 'coupled' dictionary).
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
@@ -61,6 +64,8 @@ Description
 #include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
+#include "petscSession.H"
+#include "pendularNewton.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -80,6 +85,7 @@ int main(int argc, char *argv[])
     #include "checkNonlinearKeywords.H"
     #include "createFields.H"
     #include "createBalances.H"
+    #include "createNewton.H"
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -109,6 +115,9 @@ int main(int argc, char *argv[])
     // by main is lost in v1912 (argList's destructor calls
     // Pstream::exit(0)): exit here
     const int status = balances.exitStatus();
+    // PETSc ends before MPI (Pstream::exit does not return)
+    newton.clear();
+    petsc.clear();
     Pstream::exit(status);
     return status;
 }

@@ -4,6 +4,8 @@
 
 #include "pendularResidual.H"
 #include "surfaceFields.H"
+#include "processorFvPatch.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -39,8 +41,21 @@ Foam::pendularResidual::pendularResidual
     W0_(fvMesh_.nCells()),
     A0_(fvMesh_.nCells()),
     E0_(fvMesh_.nCells()),
-    alphaGuess_(alphaGuess)
+    alphaGuess_(alphaGuess),
+    cache_(fvMesh_.nCells()),
+    cacheNext_(fvMesh_.nCells(), Zero),
+    nbrPorosity_(),
+    nbrAlphaGuess_()
 {
+    // No state cached yet: keys no unknown can take
+    for (auto& entries : cache_)
+    {
+        for (cacheEntry& e : entries)
+        {
+            e.x[0] = e.x[1] = e.x[2] = -GREAT;
+        }
+    }
+
     if (medium_.nonEquilibrium())
     {
         FatalErrorInFunction
@@ -52,12 +67,12 @@ Foam::pendularResidual::pendularResidual
     forAll(fvMesh_.boundary(), patchi)
     {
         const fvPatch& patch = fvMesh_.boundary()[patchi];
-        if (patch.coupled())
+        if (patch.coupled() && !isA<processorFvPatch>(patch))
         {
             FatalErrorInFunction
                 << "pendularResidual: coupled patch " << patch.name()
-                << " (" << patch.type() << ") not supported: serial runs"
-                << " without cyclic patches only" << exit(FatalError);
+                << " (" << patch.type() << ") not supported: processor"
+                << " patches only" << exit(FatalError);
         }
         if (polyPatch::constraintType(patch.type()))
         {
@@ -84,6 +99,14 @@ Foam::pendularResidual::pendularResidual
                 << exit(FatalError);
         }
     }
+
+    // The porosity and guess of the cells across processor patches
+    // (collective)
+    syncTools::swapBoundaryCellList
+    (
+        fvMesh_, medium_.porosity().primitiveField(), nbrPorosity_
+    );
+    syncTools::swapBoundaryCellList(fvMesh_, alphaGuess_, nbrAlphaGuess_);
 
     forAll(W0_, celli)
     {
@@ -123,14 +146,39 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     const scalar* x
 ) const
 {
+    FixedList<cacheEntry, nCache>& entries = cache_[celli];
+    for (const cacheEntry& e : entries)
+    {
+        if (e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2])
+        {
+            return e.s;
+        }
+    }
+    label& next = cacheNext_[celli];
+    cacheEntry& e = entries[next];
+    next = (next + 1) % nCache;
+    e.x[0] = x[0];
+    e.x[1] = x[1];
+    e.x[2] = x[2];
+    e.s = state(medium_.porosity()[celli], alphaGuess_[celli], x);
+    return e.s;
+}
+
+
+Foam::pendularResidual::cellState Foam::pendularResidual::state
+(
+    const scalar phi,
+    const scalar alphaGuess,
+    const scalar* x
+) const
+{
     // updateState.H, model A
-    const scalar phi = medium_.porosity()[celli];
     cellState s;
     s.T = x[0];
     s.p = x[1] + pRef_;
     s.W = x[2];
     const pendularMedium::saturationState sat = medium_.saturation(s.T);
-    s.alpha = medium_.alphaL(s.W, sat, phi, alphaGuess_[celli]);
+    s.alpha = medium_.alphaL(s.W, sat, phi, alphaGuess);
     s.rhoW = medium_.vapourDensity(s.W, s.alpha, sat, phi);
     const scalar R = medium_.R();
     const scalar pw = s.rhoW*R*s.T/medium_.Mw();
@@ -287,10 +335,18 @@ void Foam::pendularResidual::faceFlux
         return;
     }
 
-    // Coupled patches are refused by the constructor
-    FatalErrorInFunction
-        << "pendularResidual: face " << facei << " of a coupled patch"
-        << exit(FatalError);
+    // A face of a processor patch: the cell across at xNei
+    label patchi, i;
+    patchFace(facei, patchi, i);
+    const label bFacei = facei - fvMesh_.nInternalFaces();
+    const cellState n =
+        state(nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei);
+    flux
+    (
+        o, n, fvMesh_.magSf().boundaryField()[patchi][i],
+        fvMesh_.weights().boundaryField()[patchi][i],
+        fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i], F
+    );
 }
 
 

@@ -1,0 +1,181 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "pendularNewton.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pendularNewton::pendularNewton
+(
+    const fvMesh& mesh,
+    const dictionary& linearDict,
+    const scalar TTol,
+    const scalar pTol,
+    const scalar WTolAbs,
+    const scalar dryingFactor,
+    const label maxIter,
+    const bool verbose
+)
+:
+    mesh_(mesh),
+    system_(mesh, 3, linearDict),
+    TTol_(TTol),
+    pTol_(pTol),
+    WTolAbs_(WTolAbs),
+    dryingFactor_(dryingFactor),
+    maxIter_(maxIter),
+    verbose_(verbose)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::pendularNewton::valid
+(
+    const pendularResidual& res,
+    const scalarField& x,
+    const scalar pRef
+) const
+{
+    const scalar TLow = res.medium().minimumTemperature();
+    bool ok = true;
+    for (label c = 0; c < x.size()/3 && ok; ++c)
+    {
+        const scalar T = x[3*c];
+        const scalar p = x[3*c + 1] + pRef;
+        const scalar W = x[3*c + 2];
+        ok =
+            T >= TLow && T < GREAT
+         && p > 0 && p < GREAT
+         && W >= 0 && W < GREAT;
+    }
+    reduce(ok, andOp<bool>());
+    return ok;
+}
+
+
+Foam::pendularNewton::result Foam::pendularNewton::solve
+(
+    const pendularResidual& res,
+    scalarField& x,
+    const scalar pRef
+)
+{
+    result out;
+    out.iterations = 0;
+    out.converged = false;
+    out.valid = valid(res, x, pRef);
+    out.residual = GREAT;
+    out.update = GREAT;
+    if (!out.valid)
+    {
+        return out;
+    }
+
+    const label nCells = x.size()/3;
+    scalarField sW, sG, sE;
+    scalarField dx(x.size());
+    label nChopped = 0;
+
+    for (label iter = 0; ; ++iter)
+    {
+        const scalarField R(res.jacobian(x, system_));
+
+        // Residuals in units of the tolerances through the storage
+        res.scales(x, sW, sG, sE);
+        FixedList<scalar, 3> r(scalar(0));
+        for (label c = 0; c < nCells; ++c)
+        {
+            r[0] = max(r[0], mag(R[3*c])/(sW[c]*WTolAbs_));
+            r[1] = max(r[1], mag(R[3*c] + R[3*c + 1])/(sG[c]*pTol_));
+            r[2] = max(r[2], mag(R[3*c + 2])/(sE[c]*TTol_));
+        }
+        for (label k = 0; k < 3; ++k)
+        {
+            reduce(r[k], maxOp<scalar>());
+        }
+        out.residual = r;
+        out.iterations = iter;
+
+        if (verbose_)
+        {
+            Info<< "    Newton " << iter << ": residual/tol (water "
+                << r[0] << ", gas " << r[1] << ", energy " << r[2]
+                << "), update/tol (T " << out.update[0] << ", p "
+                << out.update[1] << ", W " << out.update[2] << "), chopped "
+                << nChopped << endl;
+        }
+
+        // Converged: residuals and update below the tolerances; or the
+        // round-off floor of the residuals reached (measured up to 1.6
+        // times the water tolerance with WTol 1e-11: the balances' terms
+        // cancel to 1e-16 of the stored water) with an update 100 times
+        // below the tolerances, whose error the Newton step estimates
+        const scalar rMax = max(r[0], max(r[1], r[2]));
+        const scalar uMax =
+            max(out.update[0], max(out.update[1], out.update[2]));
+        if
+        (
+            iter > 0 && nChopped == 0
+         && ((rMax < 1 && uMax < 1) || (rMax < floorFactor_ && uMax < 1e-2))
+        )
+        {
+            out.converged = true;
+            return out;
+        }
+        if (iter == maxIter_)
+        {
+            return out;
+        }
+
+        // The Newton step
+        dx = Zero;
+        // (a step short of the linear tolerance, e.g. at the round-off
+        // floor near convergence, is still a descent step: the
+        // convergence test above judges the iterate, not the step)
+        const solverPerformance perf = system_.solve(dx, false);
+        if (verbose_ && !perf.converged())
+        {
+            Info<< "    Newton " << iter << ": linear solver stopped at "
+                << perf.finalResidual() << " after " << perf.nIterations()
+                << " iterations" << endl;
+        }
+
+        FixedList<scalar, 3> u(scalar(0));
+        nChopped = 0;
+        for (label c = 0; c < nCells; ++c)
+        {
+            u[0] = max(u[0], mag(dx[3*c])/TTol_);
+            u[1] = max(u[1], mag(dx[3*c + 1])/pTol_);
+            u[2] = max(u[2], mag(dx[3*c + 2])/WTolAbs_);
+            x[3*c] += dx[3*c];
+            x[3*c + 1] += dx[3*c + 1];
+            const scalar W = x[3*c + 2] + dx[3*c + 2];
+            if (W < dryingFactor_*x[3*c + 2])
+            {
+                ++nChopped;
+                x[3*c + 2] *= dryingFactor_;
+            }
+            else
+            {
+                x[3*c + 2] = W;
+            }
+        }
+        for (label k = 0; k < 3; ++k)
+        {
+            reduce(u[k], maxOp<scalar>());
+        }
+        reduce(nChopped, sumOp<label>());
+        out.update = u;
+
+        if (!(out.valid = valid(res, x, pRef)))
+        {
+            out.iterations = iter + 1;
+            return out;
+        }
+    }
+}
+
+
+// ************************************************************************* //
