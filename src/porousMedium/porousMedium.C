@@ -4,6 +4,8 @@
 
 #include "porousMedium.H"
 #include "propertyField.H"
+#include "startupReport.H"
+#include "temperatureCheck.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,6 +27,32 @@ Foam::volScalarField Foam::porousMedium::propertyField
 }
 
 
+inline Foam::scalar Foam::porousMedium::matrixCapacity
+(
+    const label celli
+) const
+{
+    const scalar phi = porosity()[celli];
+    return
+        (1.0 - phi)*rhoCpSolid_[celli]
+      + (phi - waterContent_[celli])*gas().rhoCp();
+}
+
+
+inline Foam::scalar Foam::porousMedium::kappaAt
+(
+    const label celli,
+    const scalar alphaL
+) const
+{
+    return conductivityModel().kappaPartiallySaturated
+    (
+        kappaSolid_[celli], liquid().kappa(), gas().kappa(), alphaL,
+        porosity()[celli]
+    );
+}
+
+
 inline void Foam::porousMedium::cellEnthalpy
 (
     const label celli,
@@ -34,10 +62,8 @@ inline void Foam::porousMedium::cellEnthalpy
     scalar& C
 ) const
 {
-    const scalar phi = porosity()[celli];
     const scalar theta0 = waterContent_[celli];
-    const scalar rhoCpDry =
-        (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*gas().rhoCp();
+    const scalar rhoCpDry = matrixCapacity(celli);
 
     H = rhoCpDry*T;
     C = rhoCpDry;
@@ -65,12 +91,7 @@ Foam::scalar Foam::porousMedium::kappaCell
     // Liquid fraction of the pores, alpha_l = theta_l/phi: the pore fluid
     // is alpha_l k_l + (1 - alpha_l) k_v (kappaPartiallySaturated), or
     // the table k_e(alpha_l) of conductivityModel tabulated
-    const scalar alphaL = phi > SMALL ? thetaL/phi : 0;
-
-    return conductivityModel().kappaPartiallySaturated
-    (
-        kappaSolid_[celli], liquid().kappa(), gas().kappa(), alphaL, phi
-    );
+    return kappaAt(celli, phi > SMALL ? thetaL/phi : 0);
 }
 
 
@@ -309,11 +330,8 @@ Foam::label Foam::porousMedium::temperature
 
     forAll(T, celli)
     {
-        const scalar phi = porosity()[celli];
-        const scalar theta0 = waterContent_[celli];
         const scalar minCapacity =
-            (1.0 - phi)*rhoCpSolid_[celli] + (phi - theta0)*gas().rhoCp()
-          + theta0*waterMinCapacity;
+            matrixCapacity(celli) + waterContent_[celli]*waterMinCapacity;
 
         scalar Ti = T[celli];
         scalar Hi, Ci;
@@ -424,6 +442,131 @@ Foam::tmp<Foam::volScalarField> Foam::porousMedium::kappa
     correctKappa(tkappa.ref(), T, TMax);
 
     return tkappa;
+}
+
+
+void Foam::porousMedium::report
+(
+    const volScalarField& T,
+    const volScalarField& TMax
+) const
+{
+    const apparentHeatCapacityModel& pc = *phaseChange_;
+    const label n = mesh_.nCells();
+    const scalarField& phi = porosity().primitiveField();
+    const scalarField& theta0 = waterContent_.primitiveField();
+
+    scalarField alpha0(n), w0(n), rhoCpDry(n), rhoCpWet(n), Lw(n);
+    forAll(alpha0, celli)
+    {
+        alpha0[celli] = phi[celli] > SMALL ? theta0[celli]/phi[celli] : 0;
+        w0[celli] =
+            theta0[celli]*liquid().rho()/((1 - phi[celli])*solid().rho());
+        // Frozen composition: all the water liquid (sigma = 0) or vapour
+        rhoCpWet[celli] =
+            matrixCapacity(celli) + theta0[celli]*pc.sensibleCapacity(0);
+        rhoCpDry[celli] =
+            matrixCapacity(celli) + theta0[celli]*pc.sensibleCapacity(1);
+        Lw[celli] =
+            theta0[celli]*(pc.latentEnthalpy(1) - pc.latentEnthalpy(0));
+    }
+
+    // k_e where the law is defined (tabulated: its table's range)
+    const effectiveConductivityModel& law = conductivityModel();
+    bool dryDefined = true, wetDefined = true, satDefined = true;
+    scalarField kDry(n, Zero), kWet(n, Zero), kSat(n, Zero);
+    forAll(kDry, celli)
+    {
+        dryDefined = dryDefined && law.definedAt(0);
+        wetDefined = wetDefined && law.definedAt(alpha0[celli]);
+        satDefined = satDefined && law.definedAt(1);
+        kDry[celli] = dryDefined ? kappaAt(celli, 0) : 0;
+        kWet[celli] = wetDefined ? kappaAt(celli, alpha0[celli]) : 0;
+        kSat[celli] = satDefined ? kappaAt(celli, 1) : 0;
+    }
+
+    startupReport table("ahcFoam");
+    table.add("T_0", T.primitiveField(), "K", "initial temperature");
+    table.add("phi", phi, "-", "porosity");
+    table.add
+    (
+        "theta_0", theta0, "-",
+        "initial water, volume fraction of the soil (waterContent)"
+    );
+    table.add
+    (
+        "w_0", w0, "kg/kg",
+        "initial water, mass per mass of dry solid: theta_0 rho_l/((1 - phi)"
+        " rho_s)"
+    );
+    table.add
+    (
+        "alpha_l_0", alpha0, "-", "liquid fraction of the pores, theta_0/phi"
+    );
+    table.add
+    (
+        "rhoCp_dry", rhoCpDry, "J/m3/K",
+        "(rho C) of the dried soil (the initial water as vapour)"
+    );
+    table.add
+    (
+        "rhoCp_wet", rhoCpWet, "J/m3/K",
+        "(rho C) of the soil with its initial water, latent heat excluded"
+    );
+    table.addConductivities
+    (
+        kDry, dryDefined, kWet, wetDefined, kSat, satDefined,
+        rhoCpDry, rhoCpWet
+    );
+    table.add
+    (
+        "L_water", Lw, "J/m3",
+        "latent heat of the initial water per volume of soil ("
+      + pc.type() + ")"
+    );
+    const scalar TLow = pc.Tv() - 2*pc.dT();
+    const scalar THigh = pc.Tv() + 2*pc.dT();
+    table.add("T_v", pc.Tv(), "K", "evaporation temperature");
+    table.add("T_evap_low", TLow, "K", "T_v - 2 dT: evaporation window (95 % of L)");
+    table.add("T_evap_high", THigh, "K", "T_v + 2 dT");
+    table.add
+    (
+        "T_min", scalar(0), "K",
+        "validity: T > 0 K in every cell and on every patch, at every step"
+    );
+    table.add
+    (
+        "T_0_min", temperatureCheck::celsiusThreshold, "K",
+        "validity: initial soil at or above it (else Celsius typed as"
+        " kelvin); no upper bound (constant phase properties)"
+    );
+
+    // A cell starting in (or above) the window has lost part of its water
+    // before the first step
+    const scalar sigmaLow = pc.sigma(TLow);
+    boolList early(n, false);
+    scalar sigmaMax = 0;
+    forAll(early, celli)
+    {
+        const scalar sigma0 =
+            pc.evaporatedFraction(T[celli], TMax[celli]);
+        early[celli] = theta0[celli] > 0 && sigma0 >= sigmaLow;
+        if (early[celli])
+        {
+            sigmaMax = max(sigmaMax, sigma0);
+        }
+    }
+    reduce(sigmaMax, maxOp<scalar>());
+    table.warn
+    (
+        early,
+        "initial state outside the validity range: water at or above the"
+        " evaporation window (T_v - 2 dT = " + Foam::name(TLow)
+      + " K): up to a fraction " + Foam::name(sigmaMax) + " of"
+        " theta_0 counts as already evaporated"
+    );
+
+    table.write(Info);
 }
 
 

@@ -5,6 +5,7 @@
 #include "pendularMedium.H"
 #include "propertyField.H"
 #include "checkedRead.H"
+#include "startupReport.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -385,6 +386,140 @@ void Foam::pendularMedium::checkInitialState
                 << exit(FatalIOError);
         }
     }
+}
+
+
+void Foam::pendularMedium::report
+(
+    const volScalarField& T,
+    const volScalarField& p,
+    const volScalarField& alphaL
+) const
+{
+    const label n = mesh_.nCells();
+    const scalarField& phi = porosity().primitiveField();
+    const scalarField& alpha0 = alphaL.primitiveField();
+    const scalar TL = latentHeatTemperature_;
+
+    // The initial state as pendularFoam derives it (updateState.H):
+    // W from alpha_l and T, the vapour in equilibrium, p_a = p_g - p_w
+    scalarField theta0(n), W0(n), w0(n), rhoCpDry(n), rhoCpWet(n), Lw(n);
+    scalarField kDry(n), kWet(n), kSat(n);
+    bool dryDefined = true, wetDefined = true, satDefined = true;
+    const effectiveConductivityModel& law = conductivityModel();
+    forAll(W0, celli)
+    {
+        const scalar Tc = T[celli];
+        const scalar ph = phi[celli];
+        const scalar a = alpha0[celli];
+        const saturationState sat = saturation(Tc);
+        const scalar W = waterContent(a, sat, ph);
+        const scalar rhoW = vapourDensity(W, a, sat, ph);
+        const scalar pa = p[celli] - rhoW*R()*Tc/Mw();
+
+        theta0[celli] = ph*a;
+        W0[celli] = W;
+        w0[celli] = W/((1 - ph)*rhoSolid_);
+
+        // Dried: no water, the pores full of air at p_g
+        rhoCpDry[celli] = sensibleCapacity(Tc, 0, 0, 0, p[celli], ph);
+        rhoCpWet[celli] = sensibleCapacity(Tc, W, a, rhoW, pa, ph);
+
+        // Energy to evaporate the liquid at T_L: E(all the water vapour)
+        // - E(initial state), both at T_L
+        Lw[celli] =
+            energy(TL, W, 0, W/ph, pa, ph) - energy(TL, W, a, rhoW, pa, ph);
+
+        dryDefined = dryDefined && law.definedAt(0);
+        wetDefined = wetDefined && law.definedAt(a);
+        satDefined = satDefined && law.definedAt(1);
+        kDry[celli] = dryDefined ? kappa(0, ph) : 0;
+        kWet[celli] = wetDefined ? kappa(a, ph) : 0;
+        kSat[celli] = satDefined ? kappa(1, ph) : 0;
+    }
+
+    startupReport table("pendularFoam");
+    table.add("T_0", T.primitiveField(), "K", "initial temperature");
+    table.add("p_0", p.primitiveField(), "Pa", "initial gas pressure p_g");
+    table.add("phi", phi, "-", "porosity");
+    table.add
+    (
+        "alpha_l_0", alpha0, "-", "initial liquid fraction of the pores"
+    );
+    table.add
+    (
+        "theta_0", theta0, "-",
+        "initial liquid water, volume fraction of the soil: phi alpha_l_0"
+    );
+    table.add
+    (
+        "W_0", W0, "kg/m3",
+        "initial water (liquid and vapour) per volume of soil"
+    );
+    table.add
+    (
+        "w_0", w0, "kg/kg",
+        "initial water, mass per mass of dry solid: W_0/((1 - phi) rho_s)"
+    );
+    table.add
+    (
+        "rhoCp_dry", rhoCpDry, "J/m3/K",
+        "(rho C) of the dried soil (pores full of air at p_g) at T_0"
+    );
+    table.add
+    (
+        "rhoCp_wet", rhoCpWet, "J/m3/K",
+        "(rho C) of the initial state at fixed water, latent heat excluded"
+    );
+    table.addConductivities
+    (
+        kDry, dryDefined, kWet, wetDefined, kSat, satDefined,
+        rhoCpDry, rhoCpWet
+    );
+    table.add
+    (
+        "L_water", Lw, "J/m3",
+        "latent heat of the initial liquid per volume of soil, at T_L = "
+      + Foam::name(TL) + " K"
+    );
+    table.add
+    (
+        "alpha_l_max", pendularLimit(), "-",
+        "validity: pendular range alpha_l <= alphaLMax of the meniscus"
+        " model (cells above it are counted at each write)"
+    );
+    table.add
+    (
+        "T_min", minimumTemperature_, "K",
+        "validity: lowest T of the saturation laws (initial T below it:"
+        " error; later: step rejected)"
+    );
+    table.add
+    (
+        "T_liquid_max", dryOutTemperature_ - criticalMargin, "K",
+        "validity: no liquid (alpha_l > " + Foam::name(alphaLCritical)
+      + ") above it (T_d - " + Foam::name(criticalMargin) + " K)"
+    );
+    table.add
+    (
+        "T_d", dryOutTemperature_, "K",
+        "dry-out temperature of the laws: liquid-free at and above it"
+    );
+
+    boolList wet(n, false);
+    forAll(wet, celli)
+    {
+        wet[celli] = alpha0[celli] > pendularLimit();
+    }
+    table.warn
+    (
+        wet,
+        "initial state outside the validity range: alpha_l up to "
+      + Foam::name(gMax(alpha0)) + " above the pendular range alpha_l <= "
+      + Foam::name(pendularLimit()) + " of the meniscus model"
+    );
+
+    table.write(Info);
 }
 
 
@@ -791,19 +926,36 @@ Foam::scalar Foam::pendularMedium::energyCapacity
     const scalar porosity
 ) const
 {
-    const scalar T = sat.T;
+    const scalar th = sat.T - latentHeatTemperature_;
+    return
+        sensibleCapacity
+        (
+            sat.T, W, alphaL, vapourDensity(W, alphaL, sat, porosity), pa,
+            porosity
+        )
+      + porosity*(1 - alphaL)
+       *dVapourDensitydTAtFixedW(alphaL, sat, porosity)
+       *((CpVapour_ - CpLiquid_)*th + latentHeat_);
+}
+
+
+Foam::scalar Foam::pendularMedium::sensibleCapacity
+(
+    const scalar T,
+    const scalar W,
+    const scalar alphaL,
+    const scalar rhoW,
+    const scalar pa,
+    const scalar porosity
+) const
+{
     const scalar th = T - latentHeatTemperature_;
-    const scalar gas = porosity*(1 - alphaL);
-    const scalar rhoA = airDensity(pa, T);
-    const scalar rhoW = vapourDensity(W, alphaL, sat, porosity);
     return
         (1 - porosity)*rhoSolid_*CpSolid_ + CpLiquid_*W
-      + gas
+      + porosity*(1 - alphaL)
        *(
-            rhoA*CpAir_*(1 - th/T)
+            airDensity(pa, T)*CpAir_*(1 - th/T)
           + rhoW*(CpVapour_ - CpLiquid_)
-          + dVapourDensitydTAtFixedW(alphaL, sat, porosity)
-           *((CpVapour_ - CpLiquid_)*th + latentHeat_)
         );
 }
 
