@@ -542,7 +542,10 @@ void Foam::porousMedium::report
     );
 
     // A cell starting in (or above) the window has lost part of its water
-    // before the first step
+    // before the first step. Not a warning when TMax was read (a restart,
+    // or a soil heated before): the loss is then the history given
+    IOobject TMaxFile(TMax);
+    const bool fresh = !TMaxFile.typeHeaderOk<volScalarField>(true);
     const scalar sigmaLow = pc.sigma(TLow);
     boolList early(n, false);
     scalar sigmaMax = 0;
@@ -550,7 +553,7 @@ void Foam::porousMedium::report
     {
         const scalar sigma0 =
             pc.evaporatedFraction(T[celli], TMax[celli]);
-        early[celli] = theta0[celli] > 0 && sigma0 >= sigmaLow;
+        early[celli] = fresh && theta0[celli] > 0 && sigma0 >= sigmaLow;
         if (early[celli])
         {
             sigmaMax = max(sigmaMax, sigma0);

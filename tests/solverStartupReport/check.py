@@ -221,7 +221,8 @@ def checkAll(scratch):
     check = Check('solverStartupReport')
     logs = {}
     for name, solver in (('ahc', 'ahcFoam'), ('ahcTabulated', 'ahcFoam'),
-                         ('ahcHot', 'ahcFoam'), ('column', 'pendularFoam'),
+                         ('ahcHot', 'ahcFoam'), ('ahcHotTMax', 'ahcFoam'),
+                         ('column', 'pendularFoam'),
                          ('columnWet', 'pendularFoam')):
         case = os.path.join(scratch, name)
         rows, warnings = report(os.path.join(case, 'log.' + solver))
@@ -232,7 +233,7 @@ def checkAll(scratch):
         return check.done()
 
     for name, T0 in (('ahc', 293.15), ('ahcTabulated', 293.15),
-                     ('ahcHot', 371.0)):
+                     ('ahcHot', 371.0), ('ahcHotTMax', 371.0)):
         case, rows, warnings = logs[name]
         compare(check, name, rows, ahcExpected(case, T0))
     for name, alphaMax in (('column', 0.02), ('columnWet', 0.08)):
@@ -259,7 +260,7 @@ def checkAll(scratch):
                example and logLines[i:i + len(example)] == example)
 
     # Warnings: none in range; out of range one naming the range, its cells
-    for name in ('ahc', 'ahcTabulated', 'column'):
+    for name in ('ahc', 'ahcTabulated', 'ahcHotTMax', 'column'):
         check.true('%s: no start-up warning' % name, logs[name][2] == [],
                    ' | '.join(logs[name][2]))
     s = soil(logs['ahcHot'][0])
