@@ -282,6 +282,8 @@ def checkAll(scratch):
                % (max(alpha), nOut),
                m is not None and abs(float(m.group(1)) - max(alpha)) < 1e-9
                and int(m.group(2)) == nOut, ' | '.join(w))
+    check.true('README: the example warning is columnWet\'s',
+               len(w) == 1 and w[0] in lines, w[0] if w else '')
     return check.done()
 
 
