@@ -1,0 +1,101 @@
+"""Summary of a case written by bin/hearthCase, after its Allrun:
+
+    python3 hearthCaseSummary.py CASE      (prints the table)
+
+- each thermocouple's peak [C] and the time of the peak [h]
+  (postProcessing/thermocouples/0/sensors.csv);
+- the depth of each isotherm of TMax under the centre of the fire and
+  under its rim (90 % of its radius), measured from the fire's surface
+  (hearthAlteration's summary.csv at the last time);
+- the energy balance of the whole hearth: the solver's balance of the mesh
+  times the factor from the mesh to the whole hearth (pi/tan(angle/2) for
+  an axisymmetric wedge, 4 for a quarter pit, 1 otherwise:
+  system/hearthCaseInfo);
+- the water evaporated, whole hearth: ahcFoam, the liquid water of the
+  soil at the start minus at the end (its energy balances); pendularFoam,
+  the water that left through the patches (its water balance);
+- where the files are.
+Also writes CASE/summary.csv (name,value,unit) for tests.
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hearthTutorial as ht      # noqa: E402
+
+
+def info(case):
+    d = {}
+    with open(os.path.join(case, 'system', 'hearthCaseInfo')) as f:
+        for line in f:
+            k, v = line.split(None, 1)
+            d[k] = v.strip()
+    return d
+
+
+def main(case):
+    inf = info(case)
+    solver, factor = inf['solver'], float(inf['factor'])
+    figures = []
+    out = []
+    w = out.append
+    w('Summary of %s (%s, whole hearth = mesh x %.6g)'
+      % (os.path.abspath(case), solver, factor))
+    w('')
+    s = ht.sensors_of(case)
+    t = s.pop('time_s')
+    w('%-20s %12s %12s' % ('sensor', 'peak [C]', 'at [h]'))
+    for name, T in s.items():
+        p, tp = ht.peak(t, T)
+        w('%-20s %12.1f %12.2f' % (name, p, tp/3600))
+        figures += [('peak_' + name, p, 'C'), ('peakTime_' + name, tp/3600, 'h')]
+    w('')
+    rows = ht.alteration_summary(case)
+    w('%-20s %12s %12s' % ('isotherm of TMax', 'centre [cm]', 'rim [cm]'))
+    for r in rows:
+        c, e = float(r['depth_centre_m']), float(r['depth_rim_m'])
+        w('%-20s %12.2f %12.2f' % ('%g C' % float(r['threshold_C']),
+                                   100*c, 100*e))
+        figures += [('depthCentre_%gC' % float(r['threshold_C']), 100*c, 'cm'),
+                    ('depthRim_%gC' % float(r['threshold_C']), 100*e, 'cm')]
+    w('(depths below the fire surface: the basin or pit floor, under the '
+      'rim at %s m from the axis)' % inf['rim'])
+    w('')
+    log = os.path.join(case, 'log.' + solver)
+    if solver == 'ahcFoam':
+        first, last = ht.energy_balance(log, 0), ht.energy_balance(log, -1)
+        heatIn, stored = last['in']*factor, last['stored']*factor
+        imb = last['imbalance']*factor
+        water = (first['liquidWater'] - last['liquidWater'])*factor
+        time = last['time']
+    else:
+        b = ht.pendular_balances(log)[-1]
+        heatIn = -b['energy']['out']*factor
+        stored = b['energy']['stored']*factor
+        imb = b['energy']['imbalance']*factor
+        water = b['water']['out']*factor
+        time = b['time']
+    w('Energy balance of the whole hearth at t = %.4g h:' % (time/3600))
+    w('    heat in through the patches  %14.6g MJ' % (heatIn/1e6))
+    w('    stored in the soil           %14.6g MJ' % (stored/1e6))
+    w('    imbalance                    %14.3g J (relative %.2g)'
+      % (imb, abs(imb)/max(abs(stored), 1e-300)))
+    w('Water evaporated (whole hearth)  %14.6g kg' % water)
+    figures += [('heatIn', heatIn/1e6, 'MJ'), ('stored', stored/1e6, 'MJ'),
+                ('water', water, 'kg')]
+    w('')
+    w('Files in %s:' % os.path.abspath(case))
+    w('    sensors.png, postProcessing/thermocouples/0/sensors.csv')
+    w('    TMaxSection.png, TMaxSection.csv')
+    w('    postProcessing/hearthAlteration/<time>/summary.csv')
+    w('    log.%s (balances), summary.txt, summary.csv' % solver)
+    print('\n'.join(out))
+    with open(os.path.join(case, 'summary.csv'), 'w') as f:
+        f.write('name,value,unit\n')
+        for n, v, u in figures:
+            f.write('%s,%.10g,%s\n' % (n, v, u))
+
+
+if __name__ == '__main__':
+    main(sys.argv[1] if len(sys.argv) > 1 else '.')
