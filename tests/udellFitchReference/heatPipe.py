@@ -31,29 +31,45 @@ end, x = 0.) Integrated with classical RK4 until S_e reaches 0 (the dry-out
 front, where the liquid becomes immobile); the step is halved until the
 front moves by less than 1e-4 m (RK4's error falls as h^4: Richardson).
 
-Fluid properties are simple correlations (not DuMux's IAPWS-97 ones):
-saturation pressure IAPWS-97 eq. 30; liquid density Kell (1975); liquid
-viscosity Vogel form 2.414e-5 10^(247.8/(T - 140)) Pa s; vapour viscosity
-the IAPWS 2008 dilute-gas term; air viscosity Sutherland; Wilke's mixing
-rule; liquid conductivity a quadratic through the IAPWS 2011 values at
-25, 50 and 100 C. The front's sensitivity to them is printed (each
-perturbed by 2 %).
+Cold-end air fraction. The T equation comes from differentiating the local
+equilibrium p_g (1 - x) = p_sat(T) exp(-p_c M_w/(rho_w R T)) with
+Clausius-Clapeyron at constant h_v (that is where h_v^2/T in delta comes
+from): the ODEs carry that equilibrium along, they do not impose it. So x at
+the cold end must lie on the same law, p_sat = 101325 Pa
+exp(h_v M_w/R (1/373.15 - 1/T)) with Kelvin's factor (as DuMux's reference
+ODE does): x_0 = 0.7001. Taking x_0 = 1 - p_sat,IAPWS(T_0)/p_g (0.7102, no
+Kelvin; this script until 2026-12-01) starts 3.4 % off that law and the
+offset is carried unchanged (checked: p_v/(p_sat,CC K) = 0.966 everywhere):
+the whole steam zone is 1 K too hot and 3.7 % sub-saturated with respect to
+IAPWS, and the front lands 0.014 m further (2.1918 instead of 2.1777 m).
+With x_0 on the law, p_v/(p_sat,CC K) stays 1 within 5e-4 and p_v is
+within 0.4 % of IAPWS saturation in the steam zone (printed).
 
-Result (2026-12-01): front 2.1918 m, converged to 2e-5 m in the step
-(4e-3 m halved to 5e-4 m) and independent of the S_e where the integration
-stops (1e-4 to 1e-8); the published value is 2.157 m (Udell & Fitch 1985;
-DuMux's benchmark text): 0.035 m further. The integration does not explain
-that gap; the property correlations may: the front moves by -0.022 m for
-+2 % gas viscosity, -0.010 m for +2 % liquid viscosity, +0.0045 m for +2 %
-liquid conductivity, nothing for the diffusivity. The gap is not resolved
-(DuMux's IAPWS gas viscosities, water at the liquid pressure, are not
-reproduced here). Nor is it the correlations alone: with the constant
-properties of a version of DuMux's benchmark script (rho_w 958.4 kg/m3,
-mu_w 2.938e-4 Pa s, mu_air 2.08e-5, mu_steam 1.2e-5 Pa s mixed linearly in
-x, lambda 1.586 and 0.4278 W/(m K)), this integration gives 2.1888 m
-(printed as 'constant properties'), still 0.03 m beyond 2.157 m. The temperature equation uses a constant h_v: in the
-heat-pipe zone T is about 1 K above the saturation temperature of p_g
-(p_wsat(T) e^(-p_c M_w/(rho_w R T)) = 1.038 p_g), as in the formulation.
+Fluid properties are simple correlations (not DuMux's IAPWS-97 ones):
+saturation pressure IAPWS-97 eq. 30 (only for the check above); liquid
+density Kell (1975); liquid viscosity Vogel form 2.414e-5 10^(247.8/(T -
+140)) Pa s; vapour viscosity the IAPWS 2008 dilute-gas term; air viscosity
+Sutherland; Wilke's mixing rule; liquid conductivity a quadratic through
+the IAPWS 2011 values at 25, 50 and 100 C. The front's sensitivity to them
+is printed (each perturbed by 2 %).
+
+Independent check: with the constants of DuMux's reference ODE (rho_w
+958.4 kg/m3, mu_w 2.938e-4 Pa s, mu_air 2.08e-5 and mu_steam 1.2e-5 Pa s
+mixed linearly in x, Somerton end points 1.586 and 0.4278 W/(m K),
+sigma 0.05878 N/m, M_w 0.018016, M_a 0.02897 kg/mol, R 8.3144621,
+p_g 1.013e5 Pa) this integration reproduces the state that DuMux's C++ ODE
+test (test_heatpipe_odesolver, RK4 with step 2.5e-4 m) certifies at
+x = 0.25 m (S_e 0.98803128090, p_g 101310.369453 Pa, x 0.435205554,
+T 357.571262 K) to 1e-9 relative, and gives the front 2.1754 m: DuMux's
+heatpipe benchmark text states 'x ~ 2.18 m' for its semi-analytical front
+(numerical: ~2.24 m at 0.04 m cells).
+
+Result (2026-12-01): front 2.1777 m (own correlations), 2.1754 m (DuMux's
+constants). The 2.157 m quoted in issue 14 as 'published' is reproduced by
+neither; no DuMux version gives it (the older DuMux script, with
+conductivities 1.13/0.582 W/(m K) and D_pm = phi S_g 0.5 2.6e-6 m2/s, gives
+2.0142 m, its commit says 2.01 m). What remains between the two fronts here
+(0.0023 m) is the property correlations.
 
 Usage: heatPipe.py [profile.csv]   prints the front and writes the profile.
 """
@@ -217,14 +233,43 @@ def rk4(y, h):
     return yn
 
 
+T0 = 273.15 + 68.6
+pg0 = 101300.0
+Se0 = (0.99 - Swr)/(1 - Swr)
+TRef, pRef = 373.15, 101325.0   # Clausius-Clapeyron anchor: boiling point
+
+
+def psatCC(T):
+    """Saturation pressure that the ODEs assume (constant h_v) [Pa]."""
+    return pRef*math.exp(hv*Mw/R*(1/TRef - 1/T))
+
+
+def kelvin(Se, T):
+    """Kelvin's factor p_v/p_sat over the curved menisci."""
+    return math.exp(-p0*sigma*J(Se)*Mw/(rhoW(T)*R*T))
+
+
+def coldEnd():
+    """Cold-end state (S_e, p_g, ln x, T), x on the ODEs' equilibrium."""
+    x0 = 1 - psatCC(T0)*kelvin(Se0, T0)/pg0
+    return [Se0, pg0, math.log(x0), T0]
+
+
+def integrateFrom(h, y0):
+    """Front from the start state y0 (for the cold-end comparison)."""
+    saved = globals()['coldEnd']
+    globals()['coldEnd'] = lambda: list(y0)
+    try:
+        return integrate(h)[0]
+    finally:
+        globals()['coldEnd'] = saved
+
+
 def integrate(h, SeEnd=1e-6, keep=False):
     """RK4 from the cold end with step h until S_e reaches SeEnd; near the
     front, a step that would cross SeEnd, raise S_e or leave the two-phase
     range is halved instead, down to h*1e-6: the front is located to that."""
-    T0 = 273.15 + 68.6
-    pg0 = 101300.0
-    Se0 = (0.99 - Swr)/(1 - Swr)
-    y = [Se0, pg0, math.log(1 - psat(T0)/pg0), T0]
+    y = coldEnd()
     xpos = 0.0
     step = h
     profile = [(xpos, *y)]
@@ -272,26 +317,48 @@ def main():
         print('  stop at S_e = %g: front %.4f m'
               % (SeEnd, integrate(h, SeEnd)[0]))
     base = xf
+    # The equilibrium the ODEs carry: p_v/(p_sat,CC Kelvin) along the
+    # profile, and p_v against IAPWS saturation where the air is gone
+    _, prof = integrate(h, keep=True)
+    ccDev, iapws = 0, []
+    for (xp, Se, pg, u, T) in prof:
+        pv = pg*(1 - math.exp(u))
+        ccDev = max(ccDev, abs(pv/(psatCC(T)*kelvin(Se, T)) - 1))
+        if math.exp(u) < 1e-6:
+            iapws.append(pv/(psat(T)*kelvin(Se, T)))
+    print('equilibrium: max |p_v/(p_satCC K) - 1| = %.2e; steam zone '
+          'p_v/(p_satIAPWS K) in [%.4f, %.4f]'
+          % (ccDev, min(iapws), max(iapws)))
+    print('  (cold-end x = 1 - p_satIAPWS/p_g, no Kelvin, as before '
+          '2026-12-01: front %.4f m)' % integrateFrom(
+              h, [Se0, pg0, math.log(1 - psat(T0)/pg0), T0]))
     for key in scale:
         for f in (0.98, 1.02):
             scale[key] = f
+            xs = integrate(h)[0]
             print('  %s x %.2f: front %.4f m (%+.4f)'
-                  % (key, f, integrate(h)[0], integrate(h)[0] - base))
+                  % (key, f, xs, xs - base))
             scale[key] = 1.0
-    # A version of DuMux's benchmark script: constant properties
-    saved = (rhoW, muW, muGas, lambdaPM)
+    # The constants of DuMux's reference ODE (test_heatpipe_odesolver)
     g = globals()
+    saved = {k: g[k] for k in ('rhoW', 'muW', 'muGas', 'lambdaPM', 'R',
+                               'Mw', 'Ma', 'sigma', 'pg0')}
+    g.update(R=8.3144621, Mw=0.018016, Ma=0.02897, sigma=0.05878,
+             pg0=1.013e5)
     g['rhoW'] = lambda T: 958.4
     g['muW'] = lambda T: 2.938e-4
     g['muGas'] = lambda T, x: x*2.08e-5 + (1 - x)*1.2e-5
     g['lambdaPM'] = lambda Sw, T: 0.4278 + math.sqrt(Sw)*(1.586 - 0.4278)
-    print('  constant properties (DuMux script): front %.4f m'
-          % integrate(h)[0])
-    g['rhoW'], g['muW'], g['muGas'], g['lambdaPM'] = saved
+    y = coldEnd()
+    for i in range(1000):
+        y = rk4(y, 2.5e-4)
+    print('DuMux constants at x = 0.25 m (RK4, 2.5e-4 m): S_e %.11f '
+          'p_g %.6f x %.9f T %.6f' % (y[0], y[1], math.exp(y[2]), y[3]))
+    print('DuMux constants: front %.4f m' % integrate(h)[0])
+    g.update(saved)
     print('FRONT %.6f' % base)
 
     if len(sys.argv) > 1:
-        _, prof = integrate(h, keep=True)
         with open(sys.argv[1], 'w') as out:
             out.write('x,Sw,pg,xAir,T\n')
             for (xp, Se, pg, u, T) in prof[::max(1, len(prof)//400)]:
