@@ -65,11 +65,19 @@ heatpipe benchmark text states 'x ~ 2.18 m' for its semi-analytical front
 (numerical: ~2.24 m at 0.04 m cells).
 
 Result (2026-12-01): front 2.1777 m (own correlations), 2.1754 m (DuMux's
-constants). The 2.157 m quoted in issue 14 as 'published' is reproduced by
-neither; no DuMux version gives it (the older DuMux script, with
-conductivities 1.13/0.582 W/(m K) and D_pm = phi S_g 0.5 2.6e-6 m2/s, gives
-2.0142 m, its commit says 2.01 m). What remains between the two fronts here
-(0.0023 m) is the property correlations.
+constants). The 2.157 m quoted in issue 14 as 'published' is neither; it
+is what DuMux's constants give with the cold end at 343 K (70 C, OGS's
+boundary temperature and DuMux's initial one) instead of 341.75 K: 2.1557 m
+(own correlations: 2.1582 m); the front moves by -0.0155 m per kelvin of
+the cold-end temperature. No DuMux version gives 2.157 m with 341.75 K (the
+older DuMux script, with conductivities 1.13/0.582 W/(m K) and
+D_pm = phi S_g 0.5 2.6e-6 m2/s, gives 2.0142 m; its commit says 2.01 m).
+What remains between our two fronts (0.0023 m) is the property
+correlations. With real-water thermodynamics (thermo = 'iapws' above) the
+front is 2.1690 m: the constant h_v of the formulation costs 0.009 m.
+Other sensitivities (measured, not tested): cold-end S_w 0.98 / 0.995 /
+0.999: 2.1680 / 2.1827 / 2.1867 m; q 99 / 101 W/m2: 2.1997 / 2.1562 m;
+D_pm x 0.5 / x 2: within 1e-4 m.
 
 Usage: heatPipe.py [profile.csv]   prints the front and writes the profile.
 """
@@ -183,6 +191,38 @@ def dJdSe(Se):
     return -(1.417 - 2*2.120*s + 3*1.263*s**2)
 
 
+# Thermodynamics of the phase change. 'huang': the formulation's constant
+# h_v, both as latent heat and in the Clausius-Clapeyron slope of p_sat.
+# 'iapws': real water, p_sat of IAPWS-97 (its slope as the ideal-gas
+# Clapeyron heat h_C = R T^2/M_w dln p_sat/dT, 2.293e6 J/kg at 100 C) and
+# the latent heat h_L(T) of the steam tables (linear through 2333.0 kJ/kg
+# at 70 C and 2256.4 kJ/kg at 100 C). Re-deriving eta in the air-free zone
+# (energy q = -lambda T' + h_L m_v, Darcy for both phases with zero net
+# water flux, d/dx of p_g = p_sat(T) e^(-p_c M_w/(rho_w R T))) gives
+# delta = rho_w h_L h_C K alpha/(lambda nu_g T), alpha = 1 + p_c/(rho_w h_C),
+# and m_v = eta q/h_L in the other three equations: Huang's delta for
+# h_L = h_C = h_v.
+thermo = 'huang'
+
+
+def latentHeat(T):
+    if thermo == 'huang':
+        return hv
+    return 2256.4e3 + (T - 373.15)*(2256.4e3 - 2333.0e3)/30
+
+
+def clapeyronHeat(T):
+    if thermo == 'huang':
+        return hv
+    d = 1e-3
+    return R*T*T/Mw*(math.log(psat(T + d)) - math.log(psat(T - d)))/(2*d)
+
+
+def psatModel(T):
+    """The saturation pressure the ODEs carry."""
+    return psatCC(T) if thermo == 'huang' else psat(T)
+
+
 def rhs(y):
     """Right-hand side in (S_e, p_g, u = ln x, T): in the heat-pipe zone
     x decays on a length |q|/(h_v D_pm rho_g) ~ 1e-7 m, stiff for x,
@@ -202,17 +242,19 @@ def rhs(y):
     beta = nuW/nuG
     lam = lambdaPM(Sw, T)
     D = Dpm(Sw, T, pg)
-    alpha = 1 + pc/(rw*hv)
+    hL = latentHeat(T)
+    hC = clapeyronHeat(T)
+    alpha = 1 + pc/(rw*hC)
     xi = (1 + rw*R*T/(pg*Mw*(1 - x)))/krg + beta/krw
-    delta = rw*hv**2*K*alpha/(lam*nuG*T)
+    delta = rw*hL*hC*K*alpha/(lam*nuG*T)
     zeta = (K*rw*R*T/(Mw*rg*nuG*D)*x/(1 - x)
             * (pg*Mw/(rw*R*T) + 1/(1 - x)))
     eta = delta/(delta + xi + zeta)
-    g = eta*q*nuG/(K*hv*krg)
+    g = eta*q*nuG/(K*hL*krg)
     return [
         -(1/(1 - x) + beta*krg/krw)*g/dpcdSe,
         -g/(1 - x),
-        eta*q/(hv*D*rg*(1 - x)),
+        eta*q/(hL*D*rg*(1 - x)),
         -q*(1 - eta)/lam,
     ], eta
 
@@ -251,7 +293,7 @@ def kelvin(Se, T):
 
 def coldEnd():
     """Cold-end state (S_e, p_g, ln x, T), x on the ODEs' equilibrium."""
-    x0 = 1 - psatCC(T0)*kelvin(Se0, T0)/pg0
+    x0 = 1 - psatModel(T0)*kelvin(Se0, T0)/pg0
     return [Se0, pg0, math.log(x0), T0]
 
 
@@ -303,6 +345,7 @@ def front(SeEnd=1e-6):
 
 
 def main():
+    global thermo, T0
     # Checks of the property correlations against tabulated values
     print('psat(373.124 K) = %.1f Pa (1 atm boiling point: 101325)'
           % psat(373.124))
@@ -339,6 +382,18 @@ def main():
             print('  %s x %.2f: front %.4f m (%+.4f)'
                   % (key, f, xs, xs - base))
             scale[key] = 1.0
+    # Real-water thermodynamics: front and the IAPWS equilibrium carried
+    thermo = 'iapws'
+    xr, profR = integrate(h, keep=True)
+    dev = max(abs(pg*(1 - math.exp(u))/(psat(T)*kelvin(Se, T)) - 1)
+              for (xp, Se, pg, u, T) in profR)
+    print('real water (IAPWS p_sat, h_L(T)): front %.4f m, '
+          'max |p_v/(p_satIAPWS K) - 1| = %.2e' % (xr, dev))
+    thermo = 'huang'
+    # Cold end at 343 K (70 C: OGS's boundary, DuMux's initial T)
+    T0 = 343.0
+    print('cold end at 343 K: front %.4f m' % integrate(h)[0])
+    T0 = 273.15 + 68.6
     # The constants of DuMux's reference ODE (test_heatpipe_odesolver)
     g = globals()
     saved = {k: g[k] for k in ('rhoW', 'muW', 'muGas', 'lambdaPM', 'R',
@@ -355,6 +410,10 @@ def main():
     print('DuMux constants at x = 0.25 m (RK4, 2.5e-4 m): S_e %.11f '
           'p_g %.6f x %.9f T %.6f' % (y[0], y[1], math.exp(y[2]), y[3]))
     print('DuMux constants: front %.4f m' % integrate(h)[0])
+    T0 = 343.0
+    print('DuMux constants, cold end at 343 K: front %.4f m'
+          % integrate(h)[0])
+    T0 = 273.15 + 68.6
     g.update(saved)
     print('FRONT %.6f' % base)
 
