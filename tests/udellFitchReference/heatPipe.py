@@ -68,12 +68,12 @@ Result (2026-12-01): front 2.1777 m (own correlations), 2.1754 m (DuMux's
 constants). The 2.157 m quoted in issue 14 as 'published' is neither; it
 is what DuMux's constants give with the cold end at 343 K (70 C, OGS's
 boundary temperature and DuMux's initial one) instead of 341.75 K: 2.1557 m
-(own correlations: 2.1582 m); the front moves by -0.0155 m per kelvin of
+(own correlations: 2.1582 m); the front moves by -0.016 m per kelvin of
 the cold-end temperature. No DuMux version gives 2.157 m with 341.75 K (the
 older DuMux script, with conductivities 1.13/0.582 W/(m K) and
 D_pm = phi S_g 0.5 2.6e-6 m2/s, gives 2.0142 m; its commit says 2.01 m).
 What remains between our two fronts (0.0023 m) is the property
-correlations. With real-water thermodynamics (thermo = 'iapws' above) the
+correlations. With real-water thermodynamics (thermo = 'iapws', below) the
 front is 2.1690 m: the constant h_v of the formulation costs 0.009 m.
 Other sensitivities (measured, not tested): cold-end S_w 0.98 / 0.995 /
 0.999: 2.1680 / 2.1827 / 2.1867 m; q 99 / 101 W/m2: 2.1997 / 2.1562 m;
