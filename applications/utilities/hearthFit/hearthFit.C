@@ -52,6 +52,14 @@ Description
     signal: -resume continues. A failed forward run is printed with its
     own error message.
 
+    Priors (priors: value, sd per parameter) are residual rows
+    (p - value)/sd, the covariance then the first-order posterior,
+    reported against the prior; observation groups (observations/groups)
+    carry their own sigma; predictions (TMax, isothermDepth) are computed
+    from each run's histories and reported with intervals by linear
+    propagation of the covariance (hearthFit::fitPosterior,
+    fitPredictions).
+
     Nothing is written outside <workDir> but the -writeCase copy: an
     existing -writeCase directory is refused without -overwrite, the case
     itself and directories inside its system, constant or start time (they
