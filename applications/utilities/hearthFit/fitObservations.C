@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fitObservations.H"
+#include "fitPredictions.H"
 #include "numericTable.H"
 #include "checkedRead.H"
 #include "HashTable.H"
@@ -110,7 +111,8 @@ Foam::fitObservations::fitObservations
     const label nPar
 )
 :
-    sigmaGiven(false)
+    sigmaGiven(false),
+    predictions(nullptr)
 {
     checkedRead::checkKeywords
     (
@@ -118,7 +120,7 @@ Foam::fitObservations::fitObservations
         wordList
         ({
             "file", "timeUnit", "timeWindow", "sensors", "sigma", "sigmas",
-            "weights"
+            "weights", "groups"
         })
     );
     const fileName obsFile(obsDict.get<fileName>("file").expand());
@@ -197,22 +199,94 @@ Foam::fitObservations::fitObservations
     measCol.assign(sensors.size(), -1);
     sigma.assign(sensors.size(), 1);
     weight.assign(sensors.size(), 1);
-    sigmaGiven = obsDict.found("sigma") || obsDict.found("sigmas");
+    group.assign(sensors.size(), -1);
     // Measurement standard deviation [K] and weights: finite, > 0
     const scalar sigmaAll =
         checkedRead::getOrDefault
         (
             obsDict, "sigma", dimTemperature, 1, checkedRead::positive()
         ).value();
+    // Observation groups: sensors sharing a noise level
+    std::vector<scalar> groupSigma;
+    const dictionary* groupsDict = obsDict.findDict("groups");
+    if (obsDict.found("groups") && !groupsDict)
+    {
+        FatalIOErrorInFunction(obsDict)
+            << "groups: a sub-dictionary of groups name { sensors (...);"
+            << " sigma s; }" << exit(FatalIOError);
+    }
+    bool groupSigmaGiven = false;
+    if (groupsDict)
+    {
+        for (const entry& e : *groupsDict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*groupsDict)
+                    << "groups: '" << e.keyword() << "' is not a dictionary"
+                    << " { sensors (...); sigma s; }" << exit(FatalIOError);
+            }
+            const dictionary& g = e.dict();
+            const word gName(e.keyword());
+            checkedRead::checkKeywords
+            (
+                g, wordList({"sensors", "sigma"}), "observation group " + gName
+            );
+            groupSigmaGiven = groupSigmaGiven || g.found("sigma");
+            groupSigma.push_back
+            (
+                checkedRead::getOrDefault
+                (
+                    g, "sigma", dimTemperature, sigmaAll,
+                    checkedRead::positive()
+                ).value()
+            );
+            const wordList members(g.get<wordList>("sensors"));
+            for (const word& m : members)
+            {
+                const label si = sensors.find(m);
+                if (si < 0)
+                {
+                    const word near(checkedRead::nearest(m, sensors));
+                    FatalIOErrorInFunction(g)
+                        << "observation group " << gName << ": sensor " << m
+                        << " is not an observed sensor";
+                    if (near.size())
+                    {
+                        FatalIOError << " (did you mean " << near << "?)";
+                    }
+                    FatalIOError << "; observed: " << sensors
+                        << exit(FatalIOError);
+                }
+                if (group[si] >= 0)
+                {
+                    FatalIOErrorInFunction(g)
+                        << "observation group " << gName << ": sensor " << m
+                        << " is already in group " << groupNames[group[si]]
+                        << " (a sensor belongs to one group at most)"
+                        << exit(FatalIOError);
+                }
+                group[si] = groupNames.size();
+            }
+            groupNames.append(gName);
+        }
+    }
+    sigmaGiven =
+        obsDict.found("sigma") || obsDict.found("sigmas") || groupSigmaGiven;
     const dictionary* sigmasDict = obsDict.findDict("sigmas");
     const dictionary* weightsDict = obsDict.findDict("weights");
-    // Their keywords are the observed sensors (a misspelt name would
-    // silently keep the default)
+    // Their keywords are the observed sensors or groups (a misspelt name
+    // would silently keep the default)
+    wordList allowed(sensors);
+    allowed.append(groupNames);
     for (const dictionary* sw : {sigmasDict, weightsDict})
     {
         if (sw)
         {
-            checkedRead::checkKeywords(*sw, sensors, "observed sensors");
+            checkedRead::checkKeywords
+            (
+                *sw, allowed, "observed sensors and groups"
+            );
         }
     }
     forAll(sensors, si)
@@ -227,19 +301,32 @@ Foam::fitObservations::fitObservations
                 << "sensor " << sensors[si] << " is not a column of "
                 << path << exit(FatalIOError);
         }
-        sigma[si] = sigmaAll;
-        if (sigmasDict) sigma[si] =
-            checkedRead::getOrDefault
-            (
-                *sigmasDict, sensors[si], dimTemperature, sigmaAll,
-                checkedRead::positive()
-            ).value();
-        if (weightsDict) weight[si] =
-            checkedRead::getOrDefault
-            (
-                *weightsDict, sensors[si], dimless, 1,
-                checkedRead::positive()
-            ).value();
+        // The sensor's own entry, else its group's, else the default
+        const label gi = group[si];
+        sigma[si] = gi >= 0 ? groupSigma[gi] : sigmaAll;
+        auto perSensor = [&]
+        (
+            const dictionary* d, const dimensionSet& dims, scalar& v
+        )
+        {
+            if (!d) return;
+            if (gi >= 0 && d->found(groupNames[gi]))
+            {
+                v = checkedRead::get
+                    (
+                        *d, groupNames[gi], dims, checkedRead::positive()
+                    ).value();
+            }
+            if (d->found(sensors[si]))
+            {
+                v = checkedRead::get
+                    (
+                        *d, sensors[si], dims, checkedRead::positive()
+                    ).value();
+            }
+        };
+        perSensor(sigmasDict, dimTemperature, sigma[si]);
+        perSensor(weightsDict, dimless, weight[si]);
         if (!(sigma[si] > 0) || !(weight[si] > 0))
         {
             FatalIOErrorInFunction(obsDict)
@@ -310,6 +397,11 @@ bool Foam::fitObservations::residuals
             }
             r(n++) = std::sqrt(weight[si])*(v - value(si, k))/sigma[si];
         }
+    }
+    if (predictions && predictions->size())
+    {
+        r.conservativeResize(n + predictions->size());
+        predictions->evaluate(sim, r.data() + n);
     }
     return true;
 }

@@ -170,10 +170,66 @@ Foam::fitParameters::fitParameters
         FatalIOErrorInFunction(parsDict) << "no parameters"
             << exit(FatalIOError);
     }
+    priors.assign(specs.size(), hearthFit::Prior());
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fitParameters::readPriors
+(
+    const dictionary& fitDict,
+    const bool sigmaGiven
+)
+{
+    const dictionary* priorsDict = fitDict.findDict("priors");
+    if (fitDict.found("priors") && !priorsDict)
+    {
+        FatalIOErrorInFunction(fitDict)
+            << "priors: a sub-dictionary of parameter { value v; sd s; }"
+            << exit(FatalIOError);
+    }
+    if (!priorsDict) return;
+    wordList names;
+    for (const ParameterSpec& s : specs) names.append(s.name);
+    checkedRead::checkKeywords(*priorsDict, names, "priors (parameters)");
+    if (priorsDict->size() && !sigmaGiven)
+    {
+        FatalIOErrorInFunction(*priorsDict)
+            << "priors: a prior's sd is absolute, so must be the data's"
+            << " noise: give observations/sigma (or sigmas, or a sigma"
+            << " per group)" << exit(FatalIOError);
+    }
+    forAll(specs, j)
+    {
+        const dictionary* d = priorsDict->findDict(specs[j].name);
+        if (!d)
+        {
+            if (priorsDict->found(specs[j].name))
+            {
+                FatalIOErrorInFunction(*priorsDict)
+                    << "priors: " << specs[j].name << " must be a"
+                    << " sub-dictionary { value v; sd s; }"
+                    << exit(FatalIOError);
+            }
+            continue;
+        }
+        checkedRead::checkKeywords
+        (
+            *d, wordList({"value", "sd"}), "prior of " + specs[j].name
+        );
+        // In the parameter's own units (no dimensions): finite, sd > 0
+        priors[j].mean =
+            checkedRead::get
+            (
+                *d, "value", dimless, validRange{-GREAT, GREAT, true, true}
+            ).value();
+        priors[j].sd =
+            checkedRead::get(*d, "sd", dimless, checkedRead::positive())
+           .value();
+    }
+}
+
 
 bool Foam::fitParameters::anyOffset() const
 {

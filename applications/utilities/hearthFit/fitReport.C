@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fitReport.H"
+#include "fitPredictions.H"
 #include "casePaths.H"
 #include "scratchCase.H"
 #include "OSspecific.H"
@@ -275,8 +276,9 @@ void Foam::fitReport::write
     (
         obs_.sensors.size(), std::vector<double>(obs_.times.size(), std::nan(""))
     );
+    // (the prior rows, if any, follow the data rows)
     const bool haveRes =
-        res.residuals.size() == label(obs_.times.size()*obs_.sensors.size());
+        res.residuals.size() >= label(obs_.times.size()*obs_.sensors.size());
     forAll(obs_.sensors, si)
     {
         double ss = 0;
@@ -339,7 +341,7 @@ void Foam::fitReport::write
     // Scaled sensitivities p_j dT/dp_j [C] from the final Jacobian
     // (dr/dp with r = sqrt(w)(T - m)/sigma: dT/dp = J sigma/sqrt(w))
     const bool haveJac =
-        res.jacobian.rows() == label(obs_.times.size()*obs_.sensors.size())
+        res.jacobian.rows() >= label(obs_.times.size()*obs_.sensors.size())
      && res.jacobian.cols() == params_.size()
      && res.parameters.size() == params_.size();
     if (haveJac)
@@ -455,6 +457,123 @@ void Foam::fitReport::write
             if (haveJac) Info<< ", " << fwd_.workDir/"sensitivities.png";
             Info<< endl;
         }
+    }
+}
+
+
+void Foam::fitReport::writePosterior
+(
+    const hearthFit::FitResult& res,
+    const hearthFit::fitPosterior& post,
+    const fitPredictions& preds
+) const
+{
+    std::ostringstream rep;
+    rep << std::setprecision(6);
+    const label nData = obs_.size();
+    const bool haveRes = res.residuals.size() >= nData;
+
+    // Observation groups: their share of the cost and their s^2
+    if (obs_.groupNames.size())
+    {
+        rep << "\nobservation groups: cost = sum of ((sim - meas)/sigma)^2"
+            << " x weight over the group's readings, s^2 = cost/readings"
+            << " (~1 if sigma is the noise)\n"
+            << std::left << std::setw(14) << "group" << std::right
+            << std::setw(10) << "sigma" << std::setw(10) << "readings"
+            << std::setw(14) << "cost" << std::setw(12) << "s^2" << "\n";
+        for (label g = -1; g < obs_.groupNames.size(); ++g)
+        {
+            double cost = 0, sig = 0;
+            label n = 0;
+            forAll(obs_.sensors, si)
+            {
+                if (obs_.group[si] != g) continue;
+                sig = obs_.sigma[si];
+                for (size_t k = 0; haveRes && k < obs_.times.size(); ++k)
+                {
+                    cost += sqr(res.residuals(si*obs_.times.size() + k));
+                }
+                n += obs_.times.size();
+            }
+            if (n == 0) continue;
+            rep << std::left << std::setw(14)
+                << (g < 0 ? word("(no group)") : obs_.groupNames[g]).c_str()
+                << std::right << std::setw(10) << sig << std::setw(10) << n
+                << std::setw(14) << (haveRes ? cost : std::nan(""))
+                << std::setw(12) << (haveRes ? cost/n : std::nan("")) << "\n";
+        }
+    }
+
+    // Priors against the posterior
+    if (post.nPriors())
+    {
+        const hearthFit::Vector t = post.taught(res);
+        rep << "\npriors (rows (p - value)/sd of the cost) and the first-order"
+            << " posterior: posterior sd / prior sd = 1 the data taught"
+            << " nothing, -> 0 much\n"
+            << std::left << std::setw(12) << "parameter" << std::right
+            << std::setw(16) << "prior value" << std::setw(16) << "prior sd"
+            << std::setw(16) << "estimate" << std::setw(16) << "posterior sd"
+            << std::setw(12) << "post/prior" << "\n";
+        for (label j = 0; j < params_.size(); ++j)
+        {
+            const hearthFit::Prior& q = post.priors()[j];
+            if (!q.given()) continue;
+            rep << std::left << std::setw(12) << params_.specs[j].name.c_str()
+                << std::right << std::setw(16) << q.mean << std::setw(16)
+                << q.sd << std::setw(16) << res.parameters(j)
+                << std::setw(16)
+                << (res.standardErrors.size() > j
+                    ? res.standardErrors(j) : std::nan(""))
+                << std::setw(12) << t(j) << "\n";
+        }
+    }
+
+    // Predictions with their intervals
+    if (preds.size())
+    {
+        const hearthFit::PredictionResult pr = post.predict(res);
+        rep << "\npredictions at the estimates, intervals by linear"
+            << " propagation of the parameter covariance at the parameters'"
+            << " confidence (method/confidence; sensitivities from the final"
+            << " Jacobian's runs)\n";
+        if (!pr.ok)
+        {
+            rep << "    not available: " << pr.message << "\n";
+        }
+        std::ofstream os(fwd_.workDir/"predictions.csv");
+        os << std::setprecision(12) << "name,unit,value,std_error,lower,upper";
+        for (const auto& s : params_.specs) os << ",d_" << s.name;
+        os << "\n";
+        for (label k = 0; k < preds.size(); ++k)
+        {
+            const fitPredictions::Spec& s = preds.specs()[k];
+            auto v = [&](const hearthFit::Vector& x)
+            {
+                return pr.ok && x.size() > k ? x(k) : std::nan("");
+            };
+            rep << "    " << std::left << std::setw(14) << s.name.c_str()
+                << std::right << std::setw(4) << s.unit.c_str()
+                << std::setw(14) << v(pr.value) << "  std error "
+                << std::setw(12) << v(pr.standardError) << "  interval ["
+                << v(pr.lower) << ", " << v(pr.upper) << "]\n";
+            os << s.name << ',' << s.unit << ',' << v(pr.value) << ','
+               << v(pr.standardError) << ',' << v(pr.lower) << ','
+               << v(pr.upper);
+            for (label j = 0; j < params_.size(); ++j)
+            {
+                os << ',' << (pr.ok ? pr.sensitivity(k, j) : std::nan(""));
+            }
+            os << "\n";
+        }
+    }
+
+    if (rep.str().size())
+    {
+        Info<< rep.str().c_str() << endl;
+        std::ofstream os(fwd_.workDir/"report.txt", std::ios::app);
+        os << rep.str();
     }
 }
 

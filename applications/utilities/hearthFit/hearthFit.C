@@ -52,6 +52,14 @@ Description
     signal: -resume continues. A failed forward run is printed with its
     own error message.
 
+    Priors (priors: value, sd per parameter) are residual rows
+    (p - value)/sd, the covariance then the first-order posterior,
+    reported against the prior; observation groups (observations/groups)
+    carry their own sigma; predictions (TMax, isothermDepth) are computed
+    from each run's histories and reported with intervals by linear
+    propagation of the covariance (hearthFit::fitPosterior,
+    fitPredictions).
+
     Nothing is written outside <workDir> but the -writeCase copy: an
     existing -writeCase directory is refused without -overwrite, the case
     itself and directories inside its system, constant or start time (they
@@ -77,6 +85,8 @@ Usage
 #include "fitMethod.H"
 #include "fitParameters.H"
 #include "fitObservations.H"
+#include "fitPredictions.H"
+#include "fitPosterior.H"
 #include "fitForwardRuns.H"
 #include "fitState.H"
 #include "fitReport.H"
@@ -178,7 +188,7 @@ int main(int argc, char *argv[])
         wordList
         ({
             "parameters", "observations", "forwardModel", "method",
-            "firstEstimate"
+            "firstEstimate", "priors", "predictions"
         })
     );
 
@@ -187,11 +197,13 @@ int main(int argc, char *argv[])
     const dictionary& parsDict = fitDict.subDict("parameters");
     fitParameters params(parsDict, casePath);
     fitObservations obs(fitDict.subDict("observations"), runTime, params.size());
+    params.readPriors(fitDict, obs.sigmaGiven);
     const dictionary& fwdDict = fitDict.subDict("forwardModel");
     fitForwardRuns fwd(fwdDict, runTime);
 
     const dictionary* firstDict = fitDict.findDict("firstEstimate");
-    if (params.anyOffset() || firstDict)
+    const dictionary* predDict = fitDict.findDict("predictions");
+    if (params.anyOffset() || firstDict || predDict)
     {
         params.readSensorFile
         (
@@ -216,6 +228,11 @@ int main(int argc, char *argv[])
     }
 
     fwd.readWorkDir(fwdDict, casePath, startName, writeCasePath);
+
+    // Predictions from each run's histories, priors as residual rows
+    fitPredictions preds(predDict, params);
+    obs.predictions = &preds;
+    hearthFit::fitPosterior post(params.priors, obs.size(), preds.size());
 
     // A given sigma is the noise: intervals from it, s^2 tested against its
     // chi-square band; none: intervals scaled by s^2
@@ -251,6 +268,7 @@ int main(int argc, char *argv[])
         [&](std::vector<hearthFit::Evaluation>& batch)
         {
             fwd.evaluate(batch, params, obs);
+            post.absorb(batch);
         }
     );
     lm->setProgress
@@ -294,6 +312,7 @@ int main(int argc, char *argv[])
 
     // ---- Report, the case with the best parameters
     report.write(res, opts);
+    report.writePosterior(res, post, preds);
 
     if (writeCasePath.size())
     {
