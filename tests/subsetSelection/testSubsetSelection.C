@@ -1,9 +1,11 @@
 // Unit checks of src/numerics/identifiability (plain C++ + Eigen): see run.
 #include "subsetSelection.H"
 #include "laplaceDiffusivity.H"
+#include "sensorDisplacements.H"
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <functional>
 
 namespace
@@ -192,6 +194,52 @@ int main()
         checkThrows("Laplace: z2 <= z1 throws", [&](){ laplaceDiffusivity::estimate(t, T1, T2, 0.03, 0.01); });
         checkThrows("Laplace: times not increasing throws", [&](){ auto t2 = tc; t2[2] = 1; laplaceDiffusivity::estimate(t2, Tc, Tc, 0.01, 0.02); });
         checkThrows("Laplace: lengths differ throws", [&](){ laplaceDiffusivity::estimate(tc, Tl, Tc, 0.01, 0.02); });
+    }
+
+    // ---- 6. Constrained sensor displacements (Mansour 2015 §5.2.4):
+    // 10 sensors on a layout like her experiment 13 (0.18 <= r/R <= 0.54,
+    // 0.18 <= z/R <= 1.96, R = 5 cm) with the normals of the isotherms of
+    // a point source at the fire's centre (grad T along (r, z)): the
+    // substitution leaves n - 2 = 8 unknowns, every displacement along its
+    // normal (5.19), zero mean (5.20), the shifts added (5.21); all normals
+    // parallel (1-D): n - 1 unknowns
+    {
+        namespace sd = sensorDisplacements;
+        std::vector<double> r0, z0, phi;
+        for (int i = 0; i < 10; ++i)
+        {
+            r0.push_back(0.05*(0.18 + 0.04*i));
+            z0.push_back(0.05*(0.18 + 0.1978*i));
+            phi.push_back(sd::normalAngle(-r0.back(), -z0.back()) + M_PI);
+        }
+        const sd::Substitution sub = sd::substitution(phi);
+        check("displacements: 8 free unknowns for 10 sensors", sub.Z.cols() == 8, sub.Z.cols(), 8);
+        const double orth = (sub.Z.transpose()*sub.Z - Eigen::MatrixXd::Identity(8, 8)).norm();
+        check("displacements: Z orthonormal", orth < 1e-13, orth, 0);
+        Eigen::VectorXd q(8);
+        for (int k = 0; k < 8; ++k) q(k) = 1e-3*std::cos(1.7*k + 0.3);
+        std::vector<double> r, z;
+        sd::displace(sub, q, 1.4e-3, 9.8e-3, r0, z0, r, z);
+        double sr = 0, sz = 0, cross = 0, moved = 0;
+        for (int i = 0; i < 10; ++i)
+        {
+            const double dr = r[i] - r0[i] - 1.4e-3, dz = z[i] - z0[i] - 9.8e-3;
+            sr += dr;
+            sz += dz;
+            cross = std::max(cross, std::abs(dr*std::sin(phi[i]) - dz*std::cos(phi[i])));
+            moved = std::max(moved, std::hypot(dr, dz));
+        }
+        // rounding: positions ~0.1 m carry 1.4e-17 m each, 10 of them
+        check("displacements: sum dr = 0 (5.20), to rounding 1e-15", std::abs(sr) < 1e-15, sr, 0);
+        check("displacements: sum dz = 0 (5.20), to rounding 1e-15", std::abs(sz) < 1e-15, sz, 0);
+        check("displacements: along the normals, sin phi dr = cos phi dz (5.19)", cross < 1e-16, cross, 0);
+        check("displacements: the sensors did move", moved > 1e-4, moved, 1e-3);
+        checkRel("normal angle of grad T = (0, -1): -pi/2", sd::normalAngle(0, -1), -M_PI/2, 1e-15);
+        const sd::Substitution sub1 = sd::substitution(std::vector<double>(6, M_PI/2));
+        check("displacements: parallel normals (1-D): n - 1 = 5 unknowns", sub1.Z.cols() == 5, sub1.Z.cols(), 5);
+        checkThrows("displacements: 2 sensors throw", [](){ sd::substitution({0, 1}); });
+        checkThrows("displacements: zero gradient throws", [](){ sd::normalAngle(0, 0); });
+        checkThrows("displacements: wrong q size throws", [&](){ std::vector<double> a, b; sd::displace(sub, Eigen::VectorXd(3), 0, 0, r0, z0, a, b); });
     }
 
     std::printf("%d failed\n", failures);
