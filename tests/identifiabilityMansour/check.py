@@ -18,7 +18,9 @@
    - sigma_3 and the ranking are printed beside hers, not checked: our
      sigma_3 (~470) is 17x hers (26.79) and the ranking is
      (rho C)_s > phi > k_s where hers is phi > k_s > (rho C)_s (see
-     the report of branch fitIdentify)."""
+     the report of branch fitIdentify). The ranking depends on the case:
+     hearthFit on the 1-D wet clay column of tests/hearthFitSynthetic
+     (700 C, harmonic k_e) ranks phi > k_s > (rho C)_s, hers."""
 import csv
 import math
 import re
