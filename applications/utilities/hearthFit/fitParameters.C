@@ -79,11 +79,12 @@ Foam::fitParameters::fitParameters
         if (d.found("initialFrom"))
         {
             const word from(d.get<word>("initialFrom"));
-            if (from != "laloyMassard")
+            if (from != "laloyMassard" && from != "firstEstimate")
             {
                 FatalIOErrorInFunction(d)
                     << "parameter " << s.name << ": initialFrom " << from
-                    << ": valid is laloyMassard" << exit(FatalIOError);
+                    << ": valid choices: laloyMassard firstEstimate (the same: the"
+                    << " firstEstimate method's diffusivity)" << exit(FatalIOError);
             }
             factor =
                 checkedRead::getOrDefault

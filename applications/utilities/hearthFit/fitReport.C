@@ -7,6 +7,7 @@
 #include "casePaths.H"
 #include "scratchCase.H"
 #include "OSspecific.H"
+#include "subsetSelection.H"
 
 #include <cmath>
 #include <cstdlib>
@@ -44,6 +45,43 @@ Foam::fitReport::fitReport
         progressCsv_ << ",damping,elapsed_s,runs,event" << std::endl;
     }
 }
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Identifiable parameters and their ranking (Mansour 2015 §4.8 subset
+// selection, src/numerics/identifiability) from the final scaled Jacobian
+// J diag(|p|); numerical rank: singular values above 1e-3 of the largest
+// (her bound: the Jacobian's error ~ sqrt of the solver's 1e-6)
+void identifiabilityLines
+(
+    std::ostringstream& rep,
+    const hearthFit::FitResult& res,
+    const Foam::fitParameters& params
+)
+{
+    if (res.jacobian.rows() == 0 || !res.jacobian.allFinite()) return;
+    const double threshold = 1e-3;
+    const hearthFit::SubsetSelection s = hearthFit::subsetSelection
+    (
+        res.jacobian*res.parameters.cwiseAbs().asDiagonal(), threshold, true
+    );
+    rep << "\nidentifiability (subset selection, Mansour 2015 4.8): rank "
+        << s.rank << " of " << params.size() << " (singular values above "
+        << threshold << " x the largest); ranking:";
+    for (size_t k = 0; k < s.order.size(); ++k)
+    {
+        rep << (k ? (int(k) < s.rank ? " > " : " | ") : " ")
+            << params.specs[s.order[k]].name.c_str();
+        if (int(k) >= s.rank) rep << " (not identifiable)";
+    }
+    rep << "\n";
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -269,6 +307,7 @@ void Foam::fitReport::write
     {
         rep << ' ' << res.singularValues(j);
     }
+    identifiabilityLines(rep, res, params_);
     rep << "\n\nRMS residual per sensor [C]\n";
 
     // Fitted histories from the residuals at the best parameters
