@@ -55,7 +55,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "pendularMedium.H"
+#include "pendularState.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
