@@ -6,6 +6,7 @@
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
 #include "syncTools.H"
+#include "waterModel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -154,9 +155,11 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     // Kelvin-Laplace equilibrium with it, then pendularState's closure
     const scalar T = x[0];
     const scalar W = x[2];
-    const pendularMedium::saturationState sat = medium_.saturation(T);
-    const scalar alpha = medium_.alphaL(W, sat, phi, alphaGuess);
-    const scalar rhoW = medium_.vapourDensity(W, alpha, sat, phi);
+    scalar alpha, rhoW;
+    medium_.water().equilibriumState
+    (
+        W, medium_.saturation(T), phi, alphaGuess, alpha, rhoW
+    );
     return
         pendularState::closure(medium_, phi, T, x[1] + pRef_, W, alpha, rhoW);
 }

@@ -5,6 +5,7 @@
 #include "pendularState.H"
 #include "checkedRead.H"
 #include "temperatureCheck.H"
+#include "waterModel.H"
 #include "fvc.H"
 #include "upwind.H"
 #include "fixedValueFvPatchFields.H"
@@ -310,23 +311,11 @@ void Foam::pendularState::update()
         }
         const pendularMedium::saturationState& sat = saturationStates_[celli];
         scalar alpha, rhoW;
-        if (medium_.nonEquilibrium() && stepDeltaT_ > 0)
-        {
-            // Model B: alpha relaxes towards equilibrium over the step
-            alpha =
-                medium_.relaxedAlphaL
-                (
-                    W_[celli], sat, phi, p_[celli], alphaOld_[celli],
-                    stepDeltaT_
-                );
-            rhoW = medium_.freeVapourDensity(W_[celli], alpha, phi);
-        }
-        else
-        {
-            alpha = medium_.alphaL(W_[celli], sat, phi, alphaL_[celli]);
-            // all the water vapour in a dry (liquid-free) cell
-            rhoW = medium_.vapourDensity(W_[celli], alpha, sat, phi);
-        }
+        medium_.water().liquidAndVapour
+        (
+            W_[celli], sat, phi, p_[celli], alphaOld_[celli], stepDeltaT_,
+            alphaL_[celli], alpha, rhoW
+        );
         const cellState s =
             closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
         alphaL_[celli] = s.alpha;
@@ -569,14 +558,13 @@ Foam::scalar Foam::pendularState::relaxedVapourDensity
     const scalar Tc
 ) const
 {
-    const scalar phi = medium_.porosity()[celli];
-    const scalar alpha =
-        medium_.relaxedAlphaL
-        (
-            Wc, medium_.saturation(Tc), phi, p_[celli], alphaOld_[celli],
-            stepDeltaT_
-        );
-    return medium_.freeVapourDensity(Wc, alpha, phi);
+    scalar alpha, rhoW;
+    medium_.water().liquidAndVapour
+    (
+        Wc, medium_.saturation(Tc), medium_.porosity()[celli], p_[celli],
+        alphaOld_[celli], stepDeltaT_, alphaOld_[celli], alpha, rhoW
+    );
+    return rhoW;
 }
 
 
