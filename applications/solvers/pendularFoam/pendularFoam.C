@@ -8,8 +8,10 @@ Description
     Heat, Darcy flow of the air/vapour mixture, Fick diffusion of the vapour
     and evaporation/condensation of the pendular water of a granular soil
     (EWGM report, Canot 2024, §1-2, model A: local Kelvin-Laplace
-    equilibrium of the vapour with the menisci). Conservation laws, per
-    bulk volume (pendularMedium: W, A, E and their closures):
+    equilibrium of the vapour with the menisci; model B with the water
+    model nonEquilibrium). Conservation laws, per bulk volume (the state
+    class pendularState: the unknowns, the closures of pendularMedium and
+    its waterModel, the face fluxes and these balances' residuals):
 
         water   dW/dt + div(F_w) = 0,  F_w = rho_w v_g + j
         air     dA/dt + div(F_a) = 0,  F_a = rho_a v_g - j
@@ -55,7 +57,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "pendularMedium.H"
+#include "pendularState.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"

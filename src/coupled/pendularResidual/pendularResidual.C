@@ -6,6 +6,7 @@
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
 #include "syncTools.H"
+#include "waterModel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -63,7 +64,9 @@ Foam::pendularResidual::pendularResidual
             << " medium is of model B (nonEquilibrium)" << exit(FatalError);
     }
 
-    // The patch kinds of pendularFoam's createFields.H
+    // The patch kinds of pendularFoam (pendularState); other coupled
+    // patches than processor ones are refused
+    kind_ = pendularState::patchKinds(p_, pw_);
     forAll(fvMesh_.boundary(), patchi)
     {
         const fvPatch& patch = fvMesh_.boundary()[patchi];
@@ -73,30 +76,6 @@ Foam::pendularResidual::pendularResidual
                 << "pendularResidual: coupled patch " << patch.name()
                 << " (" << patch.type() << ") not supported: processor"
                 << " patches only" << exit(FatalError);
-        }
-        if (polyPatch::constraintType(patch.type()))
-        {
-            continue;
-        }
-        const bool pFixed = p_.boundaryField()[patchi].fixesValue();
-        const bool pwFixed = pw_.boundaryField()[patchi].fixesValue();
-        if (pFixed && pwFixed)
-        {
-            kind_[patchi] = patchKind::open;
-        }
-        else if (pwFixed)
-        {
-            kind_[patchi] = patchKind::semiPermeable;
-        }
-        else if (!pFixed)
-        {
-            kind_[patchi] = patchKind::impermeable;
-        }
-        else
-        {
-            FatalErrorInFunction
-                << "Patch " << patch.name() << ": p is fixed but pw is free"
-                << exit(FatalError);
         }
     }
 
@@ -172,27 +151,17 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     const scalar* x
 ) const
 {
-    // updateState.H, model A
-    cellState s;
-    s.T = x[0];
-    s.p = x[1] + pRef_;
-    s.W = x[2];
-    const pendularMedium::saturationState sat = medium_.saturation(s.T);
-    s.alpha = medium_.alphaL(s.W, sat, phi, alphaGuess);
-    s.rhoW = medium_.vapourDensity(s.W, s.alpha, sat, phi);
-    const scalar R = medium_.R();
-    const scalar pw = s.rhoW*R*s.T/medium_.Mw();
-    const scalar pa = s.p - pw;
-    s.rhoA = medium_.Ma()*pa/(R*s.T);
-    s.rhoG = s.rhoW + s.rhoA;
-    s.omega = s.rhoW/s.rhoG;
-    s.Kg = medium_.Kg(s.alpha, phi);
-    s.kappa = medium_.kappa(s.alpha, phi);
-    s.hW = medium_.vapourEnthalpy(s.T);
-    s.hA = medium_.airEnthalpy(s.T);
-    s.E = medium_.energy(s.T, s.W, s.alpha, s.rhoW, pa, phi);
-    s.A = phi*(1 - s.alpha)*s.rhoA;
-    return s;
+    // Model A: the liquid fraction holding W at T and the vapour in
+    // Kelvin-Laplace equilibrium with it, then pendularState's closure
+    const scalar T = x[0];
+    const scalar W = x[2];
+    scalar alpha, rhoW;
+    medium_.water().equilibriumState
+    (
+        W, medium_.saturation(T), phi, alphaGuess, alpha, rhoW
+    );
+    return
+        pendularState::closure(medium_, phi, T, x[1] + pRef_, W, alpha, rhoW);
 }
 
 
@@ -203,7 +172,7 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
     const cellState& c
 ) const
 {
-    // updateState.H: T, p, pw from their conditions (the cell's where not
+    // pendularState::update(): T, p, pw from their conditions (the cell's where not
     // fixed), the densities and enthalpies from those; K_g and k_e
     // zeroGradient
     const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
@@ -215,9 +184,10 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
     cellState b(c);
     b.T = Tp.fixesValue() ? Tp[i] : c.T;
     b.p = pp.fixesValue() ? pp[i] : c.p;
-    const scalar pw = pwp.fixesValue() ? pwp[i] : pwc;
-    b.rhoW = medium_.Mw()*pw/(R*b.T);
-    b.rhoA = medium_.Ma()*(b.p - pw)/(R*b.T);
+    b.pw = pwp.fixesValue() ? pwp[i] : pwc;
+    b.pa = b.p - b.pw;
+    b.rhoW = medium_.Mw()*b.pw/(R*b.T);
+    b.rhoA = medium_.Ma()*b.pa/(R*b.T);
     b.rhoG = b.rhoW + b.rhoA;
     b.omega = b.rhoW/b.rhoG;
     b.hW = medium_.vapourEnthalpy(b.T);
@@ -248,8 +218,8 @@ void Foam::pendularResidual::flux
     scalar* F
 ) const
 {
-    // fluxes.H: linear interpolation (owner weight w), upwind carried
-    // values (owner where the flux is >= 0)
+    // pendularState::fluxes(): linear interpolation (owner weight w),
+    // upwind carried values (owner where the flux is >= 0)
     const scalar KgByMu =
         (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity();
     const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
@@ -284,8 +254,7 @@ void Foam::pendularResidual::scales
     {
         const scalar phi = medium_.porosity()[celli];
         const cellState s = state(celli, &x[3*celli]);
-        const scalar pa =
-            s.p - s.rhoW*medium_.R()*s.T/medium_.Mw();
+        const scalar pa = s.pa;
         water[celli] = V[celli]/dt_;
         gas[celli] =
             V[celli]*phi*(1 - s.alpha)*medium_.Ma()
@@ -396,9 +365,7 @@ void Foam::pendularResidual::boundaryFlux
             const bool out = j > 0;
             const scalar rhoAf = out ? c.rhoA : b.rhoA;
             const scalar rhoGf = out ? c.rhoG : b.rhoG;
-            const scalar stefan =
-                min(rhoGf/max(rhoAf, SMALL*rhoGf), scalar(100));
-            F[0] = j*stefan;
+            F[0] = j*pendularState::stefanFactor(rhoAf, rhoGf);
             F[1] = 0;
             F[2] = conduction + F[0]*(out ? c.hW : b.hW);
             break;

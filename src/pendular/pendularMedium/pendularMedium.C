@@ -6,6 +6,7 @@
 #include "propertyField.H"
 #include "checkedRead.H"
 #include "startupReport.H"
+#include "waterModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -64,26 +65,22 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     ),
     pSatDryOut_(kelvin_.saturationPressure().pSat(dryOutTemperature_))
 {
+    // The split of the water into liquid and vapour (waterModel,
+    // run-time selected; default equilibrium)
+    water_ = waterModel::New(*this, closures_);
+
     // Unknown keywords: a misspelt one would silently take its default
     {
         wordList allowed
         ({
             "CpAir", "Ma", "CpVapour",
             "latentHeat", "latentHeatTemperature", "vapourDiffusivity",
-            "gasViscosity", "tortuosity", "waterModel", "nonEquilibriumCoeffs"
+            "gasViscosity", "tortuosity"
         });
-        if (!closures_.isDict("nonEquilibriumCoeffs"))
-        {
-            allowed.append("relaxationFactor");
-        }
-        else
-        {
-            checkedRead::checkKeywords
-            (
-                closures_.subDict("nonEquilibriumCoeffs"),
-                wordList({"relaxationFactor"})
-            );
-        }
+        allowed.append
+        (
+            checkedRead::modelKeywords(closures_, "waterModel", water_())
+        );
         for (const word& key : kelvin_.keywords(closures_))
         {
             // soilProperties: the liquid density is liquid { rho; }
@@ -145,34 +142,6 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
             closures_, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
         ).value();
 
-    const word waterModel
-    (
-        closures_.getOrDefault<word>("waterModel", "equilibrium")
-    );
-    if (waterModel != "equilibrium" && waterModel != "nonEquilibrium")
-    {
-        FatalIOErrorInFunction(closures_)
-            << "Unknown waterModel " << waterModel << " in " << closures_.name()
-            << nl << "    Valid: equilibrium (model A: Kelvin-Laplace"
-            << " equilibrium) or nonEquilibrium (model B: ATMM rate law)"
-            << exit(FatalIOError);
-    }
-    nonEquilibrium_ = (waterModel == "nonEquilibrium");
-    relaxationFactor_ =
-        checkedRead::getOrDefault
-        (
-            closures_.optionalSubDict("nonEquilibriumCoeffs"), "relaxationFactor",
-            dimless, 1, positive
-        ).value();
-    if (nonEquilibrium_)
-    {
-        // The meniscus model must know the rate law: fail before any step
-        Info<< "Water model B (non-equilibrium): c_B "
-            << kelvin_.meniscus().nonEquilibriumCoeff() << ", e_B "
-            << kelvin_.meniscus().nonEquilibriumExponent() << ", R_0 "
-            << kelvin_.meniscus().grainRadius() << " m, factor "
-            << relaxationFactor_ << endl;
-    }
 
     checkedRead::check
     (
@@ -192,7 +161,25 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
 }
 
 
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::pendularMedium::~pendularMedium()
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::pendularMedium::nonEquilibrium() const
+{
+    return water_->relaxes();
+}
+
+
+const Foam::waterModel& Foam::pendularMedium::water() const
+{
+    return *water_;
+}
+
 
 Foam::pendularMedium::saturationState
 Foam::pendularMedium::lawState(const scalar T) const
@@ -787,94 +774,6 @@ Foam::scalar Foam::pendularMedium::alphaL
 ) const
 {
     return alphaL(W, saturation(T), porosity, alphaGuess);
-}
-
-
-Foam::scalar Foam::pendularMedium::relaxedAlphaL
-(
-    const scalar W,
-    const saturationState& sat,
-    const scalar porosity,
-    const scalar pg,
-    const scalar alphaOld,
-    const scalar dt
-) const
-{
-    if (alphaOld <= 0 || W <= 0 || sat.liquidFree)
-    {
-        return 0;
-    }
-
-    const meniscusCurvatureModel& meniscus = kelvin_.meniscus();
-    const scalar eB = meniscus.nonEquilibriumExponent();
-    const scalar rateScale =
-        vapourDiffusivity_
-       /(
-            relaxationFactor_*meniscus.nonEquilibriumCoeff()*rhoL()*porosity
-           *sqr(meniscus.grainRadius())*max(pg, SMALL)
-        );
-    const scalar RT = R()*sat.T;
-
-    // g(alpha) = alpha - alphaOld - dt d(alpha)/dt, increasing in alpha
-    auto g = [&](const scalar alpha)
-    {
-        const scalar rhoW = freeVapourDensity(W, alpha, porosity);
-        const scalar pw = rhoW*RT/Mw();
-        const scalar pwl =
-            sat.pSat*std::exp(sat.kelvinLength*meniscus.K(alpha));
-        const scalar rhoG = max(Ma_*(pg - pw)/RT, scalar(0)) + rhoW;
-        return
-            alpha - alphaOld
-          - dt*(pw - pwl)*std::pow(alpha, -eB)*rhoG*rateScale;
-    };
-
-    // All the water as liquid (no vapour) bounds alpha above
-    const scalar alphaMax = min(W/(porosity*rhoL()), 1 - SMALL);
-    scalar hi = std::log(alphaMax);
-    scalar gHi = g(alphaMax);
-    if (gHi <= 0)
-    {
-        return alphaMax;
-    }
-    scalar lo = std::log(max(1e-300, 1e-30*alphaMax));
-    scalar gLo = g(std::exp(lo));
-    if (gLo >= 0)
-    {
-        return std::exp(lo);
-    }
-
-    // Regula falsi (Illinois) in s = ln(alpha)
-    label side = 0;
-    for (label iter = 0; iter < 200; ++iter)
-    {
-        const scalar s = (lo*gHi - hi*gLo)/(gHi - gLo);
-        const scalar gs = g(std::exp(s));
-        if (mag(gs) <= 1e-15*alphaOld || hi - lo < 1e-13)
-        {
-            return std::exp(s);
-        }
-        if (gs > 0)
-        {
-            hi = s;
-            gHi = gs;
-            if (side == 1)
-            {
-                gLo *= 0.5;
-            }
-            side = 1;
-        }
-        else
-        {
-            lo = s;
-            gLo = gs;
-            if (side == -1)
-            {
-                gHi *= 0.5;
-            }
-            side = -1;
-        }
-    }
-    return std::exp(0.5*(lo + hi));
 }
 
 

@@ -1,0 +1,604 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "pendularState.H"
+#include "checkedRead.H"
+#include "temperatureCheck.H"
+#include "waterModel.H"
+#include "fvc.H"
+#include "upwind.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Boundary types of W, used by the linearised water equation only: fixed
+// where vapour can leave (open and semi-permeable patches)
+Foam::wordList WPatchTypes
+(
+    const Foam::volScalarField& p,
+    const Foam::List<Foam::pendularState::patchKind>& kind
+)
+{
+    using namespace Foam;
+    wordList types(p.boundaryField().types());
+    forAll(kind, patchi)
+    {
+        if
+        (
+            kind[patchi] == pendularState::patchKind::open
+         || kind[patchi] == pendularState::patchKind::semiPermeable
+        )
+        {
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+        else if (kind[patchi] == pendularState::patchKind::impermeable)
+        {
+            types[patchi] = zeroGradientFvPatchScalarField::typeName;
+        }
+    }
+    return types;
+}
+
+Foam::IOobject readIO(const Foam::word& name, const Foam::fvMesh& mesh)
+{
+    return Foam::IOobject
+    (
+        name, mesh.time().timeName(), mesh, Foam::IOobject::MUST_READ,
+        Foam::IOobject::AUTO_WRITE
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pendularState::pendularState(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    T_
+    (
+        (Info<< "Reading fields T, p, pw and alphaL\n" << endl,
+        readIO("T", mesh)),
+        mesh
+    ),
+    // At or below 0 K in a cell or on a patch, or a soil colder than 200 K
+    // (Celsius typed as kelvin): FatalIOError before any step.
+    // Gas (air + vapour) pressure p_g: an unknown; its boundary conditions
+    // say where the soil is open (fixed) or impermeable (zeroGradient)
+    p_((temperatureCheck::initial(T_), readIO("p", mesh)), mesh),
+    // Vapour partial pressure p_w: in the cells the Kelvin-Laplace
+    // equilibrium with the menisci; on open patches the atmosphere's
+    pw_(readIO("pw", mesh), mesh),
+    // Liquid fraction of the pore volume: the initial state, then a result
+    alphaL_(readIO("alphaL", mesh), mesh),
+    medium_((Info<< "Reading pendular properties\n" << endl, mesh)),
+    muGas_("muGas", dimDynamicViscosity, medium_.gasViscosity()),
+    Dv_("Dv", dimViscosity, medium_.vapourDiffusivity()),
+    kind_
+    (
+        (
+            checkedRead::check
+            (
+                alphaL_.objectPath(), "alphaL", alphaL_.primitiveField(),
+                checkedRead::closedOpen(0, 1)
+            ),
+            // p_g > 0, T within the saturation laws, no liquid near the
+            // critical point, air pressure >= 0
+            medium_.checkInitialState(T_, p_, alphaL_),
+            patchKinds(p_, pw_)
+        )
+    ),
+    W_
+    (
+        IOobject("W", mesh.time().timeName(), mesh, IOobject::NO_READ,
+            IOobject::AUTO_WRITE),
+        mesh,
+        dimensionedScalar(dimDensity, Zero),
+        WPatchTypes(p_, kind_)
+    ),
+    WScale_(0),
+    pa_(IOobject("pa", mesh.time().timeName(), mesh), p_ - pw_),
+    rhoW_
+    (
+        IOobject("rhoW", mesh.time().timeName(), mesh, IOobject::NO_READ,
+            IOobject::AUTO_WRITE),
+        pw_*dimensionedScalar("MwByR", dimMass*dimTemperature/dimEnergy,
+            medium_.Mw()/medium_.R())/T_
+    ),
+    rhoA_("rhoA", rhoW_),
+    rhoG_("rhoG", rhoW_),
+    omegaW_
+    (
+        IOobject("omegaW", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimless, Zero)
+    ),
+    RH_
+    (
+        IOobject("RH", mesh.time().timeName(), mesh, IOobject::NO_READ,
+            IOobject::AUTO_WRITE),
+        mesh,
+        dimensionedScalar(dimless, Zero)
+    ),
+    // Specific enthalpies of the vapour and of the air [J/kg]
+    hW_
+    (
+        IOobject("hW", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimEnergy/dimMass, Zero)
+    ),
+    hA_("hA", hW_),
+    Kg_
+    (
+        IOobject("Kg", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimArea, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    kappa_
+    (
+        IOobject("kappa", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimPower/dimLength/dimTemperature, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    E_
+    (
+        IOobject("E", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimEnergy/dimVolume, Zero)
+    ),
+    A_
+    (
+        IOobject("A", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimDensity, Zero)
+    ),
+    q_
+    (
+        IOobject("q", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimVolume/dimTime, Zero)
+    ),
+    Fw_("Fw", q_*dimensionedScalar(dimDensity, Zero)),
+    Fa_("Fa", Fw_),
+    FE_("FE", q_*dimensionedScalar(dimPressure, Zero)),
+    alphaOld_(alphaL_.primitiveField()),
+    stepDeltaT_(0),
+    saturationStates_
+    (
+        mesh.nCells(), pendularMedium::saturationState{-1, 0, 0, 0, 0, false}
+    ),
+    W0_(),
+    A0_(),
+    E0_()
+{
+    const scalarField& porosity = medium_.porosity().primitiveField();
+    forAll(W_, celli)
+    {
+        W_[celli] =
+            medium_.waterContent(alphaL_[celli], T_[celli], porosity[celli]);
+    }
+
+    WScale_ = gMax(W_.primitiveField());
+    forAll(W_, celli)
+    {
+        WScale_ =
+            max
+            (
+                WScale_,
+                porosity[celli]*medium_.Mw()
+               *medium_.saturationPressure(T_[celli])
+               /(medium_.R()*T_[celli])
+            );
+    }
+    reduce(WScale_, maxOp<scalar>());
+
+    checkOpenPatches();
+    update();
+    fluxes();
+    storeOld();
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::pendularState::patchKind> Foam::pendularState::patchKinds
+(
+    const volScalarField& p,
+    const volScalarField& pw
+)
+{
+    const fvMesh& mesh = p.mesh();
+    List<patchKind> kind(mesh.boundary().size(), patchKind::other);
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (patch.coupled() || polyPatch::constraintType(patch.type()))
+        {
+            continue;
+        }
+        const bool pFixed = p.boundaryField()[patchi].fixesValue();
+        const bool pwFixed = pw.boundaryField()[patchi].fixesValue();
+        if (pFixed && pwFixed)
+        {
+            kind[patchi] = patchKind::open;
+        }
+        else if (pwFixed)
+        {
+            kind[patchi] = patchKind::semiPermeable;
+        }
+        else if (!pFixed)
+        {
+            kind[patchi] = patchKind::impermeable;
+        }
+        else
+        {
+            FatalErrorInFunction
+                << "Patch " << patch.name() << ": p is fixed but pw is free ("
+                << p.objectPath() << ", " << pw.objectPath() << ")." << nl
+                << "    Valid: p and pw fixed (open to the atmosphere), pw"
+                << " fixed and p zeroGradient (semi-permeable: vapour but no"
+                << " air), or both zeroGradient (impermeable)"
+                << exit(FatalError);
+        }
+    }
+    return kind;
+}
+
+
+Foam::pendularState::cellState Foam::pendularState::closure
+(
+    const pendularMedium& medium,
+    const scalar phi,
+    const scalar T,
+    const scalar p,
+    const scalar W,
+    const scalar alpha,
+    const scalar rhoW
+)
+{
+    const scalar R = medium.R();
+    cellState s;
+    s.T = T;
+    s.p = p;
+    s.W = W;
+    s.alpha = alpha;
+    s.rhoW = rhoW;
+    s.pw = rhoW*R*T/medium.Mw();
+    s.pa = p - s.pw;
+    s.rhoA = medium.Ma()*s.pa/(R*T);
+    s.rhoG = s.rhoW + s.rhoA;
+    s.omega = s.rhoW/s.rhoG;
+    s.Kg = medium.Kg(alpha, phi);
+    s.kappa = medium.kappa(alpha, phi);
+    s.hW = medium.vapourEnthalpy(T);
+    s.hA = medium.airEnthalpy(T);
+    s.E = medium.energy(T, W, alpha, rhoW, s.pa, phi);
+    s.A = phi*(1 - alpha)*s.rhoA;
+    return s;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::pendularState::update()
+{
+    // State of the cells from the unknowns T, p (p_g) and W: the liquid
+    // fraction holding W at T, the vapour pressure in equilibrium with it
+    // (Kelvin-Laplace, model A; with model B the liquid fraction relaxed
+    // over the step from alphaOld and the vapour of the rest of the
+    // water), then closure(). Boundary values: T, p and pw from their
+    // conditions; the derived fields from those.
+    const scalar Mw = medium_.Mw();
+    const scalar Ma = medium_.Ma();
+    const scalar R = medium_.R();
+    const scalarField& porosity = medium_.porosity().primitiveField();
+
+    forAll(W_, celli)
+    {
+        const scalar phi = porosity[celli];
+        const scalar Tc = T_[celli];
+        if (saturationStates_[celli].T != Tc)
+        {
+            saturationStates_[celli] = medium_.saturation(Tc);
+        }
+        const pendularMedium::saturationState& sat = saturationStates_[celli];
+        scalar alpha, rhoW;
+        medium_.water().liquidAndVapour
+        (
+            W_[celli], sat, phi, p_[celli], alphaOld_[celli], stepDeltaT_,
+            alphaL_[celli], alpha, rhoW
+        );
+        const cellState s =
+            closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
+        alphaL_[celli] = s.alpha;
+        rhoW_[celli] = s.rhoW;
+        pw_[celli] = s.pw;
+        pa_[celli] = s.pa;
+        rhoA_[celli] = s.rhoA;
+        Kg_[celli] = s.Kg;
+        kappa_[celli] = s.kappa;
+        E_[celli] = s.E;
+        A_[celli] = s.A;
+        RH_[celli] = s.pw/sat.pSat;
+        hW_[celli] = s.hW;
+        hA_[celli] = s.hA;
+    }
+    alphaL_.correctBoundaryConditions();
+    pw_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    Kg_.correctBoundaryConditions();
+    kappa_.correctBoundaryConditions();
+
+    // Boundary values of the derived fields (coupled patches: neighbours)
+    pa_.boundaryFieldRef() = p_.boundaryField() - pw_.boundaryField();
+    rhoW_.boundaryFieldRef() = Mw*pw_.boundaryField()/(R*T_.boundaryField());
+    rhoA_.boundaryFieldRef() = Ma*pa_.boundaryField()/(R*T_.boundaryField());
+    pa_.correctBoundaryConditions();
+    rhoW_.correctBoundaryConditions();
+    rhoA_.correctBoundaryConditions();
+
+    rhoG_ = rhoW_ + rhoA_;
+    omegaW_ = rhoW_/rhoG_;
+    forAll(hW_.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+        fvPatchScalarField& hWp = hW_.boundaryFieldRef()[patchi];
+        fvPatchScalarField& hAp = hA_.boundaryFieldRef()[patchi];
+        forAll(Tp, facei)
+        {
+            hWp[facei] = medium_.vapourEnthalpy(Tp[facei]);
+            hAp[facei] = medium_.airEnthalpy(Tp[facei]);
+        }
+    }
+    hW_.correctBoundaryConditions();
+    hA_.correctBoundaryConditions();
+    forAll(RH_.boundaryField(), patchi)
+    {
+        fvPatchScalarField& RHp = RH_.boundaryFieldRef()[patchi];
+        const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+        const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
+        forAll(RHp, facei)
+        {
+            RHp[facei] = pwp[facei]/medium_.saturationPressure(Tp[facei]);
+        }
+    }
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::pendularState::upwindFaces
+(
+    const volScalarField& vf,
+    const surfaceScalarField& flux
+) const
+{
+    tmp<surfaceScalarField> tsf
+    (
+        upwind<scalar>(mesh_, flux).interpolate(vf)
+    );
+    surfaceScalarField& sf = tsf.ref();
+    forAll(kind_, patchi)
+    {
+        if (kind_[patchi] == patchKind::open)
+        {
+            const scalarField inside
+            (
+                vf.boundaryField()[patchi].patchInternalField()
+            );
+            const fvsPatchScalarField& fluxp = flux.boundaryField()[patchi];
+            fvsPatchScalarField& sfp = sf.boundaryFieldRef()[patchi];
+            forAll(sfp, facei)
+            {
+                if (fluxp[facei] > 0)
+                {
+                    sfp[facei] = inside[facei];
+                }
+            }
+        }
+    }
+    return tsf;
+}
+
+
+void Foam::pendularState::fluxes()
+{
+    // The densities and enthalpies carried are those upwind of the flux;
+    // through an open patch the gas leaving carries the cell's, the gas
+    // entering the atmosphere's. Nothing crosses impermeable and
+    // constraint patches but heat by conduction.
+    const surfaceScalarField KgByMuf(fvc::interpolate(Kg_)/muGas_);
+    const surfaceScalarField magSf(mesh_.magSf());
+    q_ = -KgByMuf*fvc::snGrad(p_)*magSf;
+
+    const surfaceScalarField j
+    (
+        -Dv_*fvc::interpolate(rhoG_)*fvc::snGrad(omegaW_)*magSf
+    );
+
+    Fw_ = upwindFaces(rhoW_, q_)*q_ + j;
+    Fa_ = upwindFaces(rhoA_, q_)*q_ - j;
+
+    FE_ =
+        -fvc::interpolate(kappa_)*fvc::snGrad(T_)*magSf
+      + Fa_*upwindFaces(hA_, Fa_)
+      + Fw_*upwindFaces(hW_, Fw_);
+
+    forAll(kind_, patchi)
+    {
+        if (kind_[patchi] == patchKind::semiPermeable)
+        {
+            // No air crosses: rho_a q = j (upwind air density), so the
+            // vapour flux is the diffusive one carried by its own Stefan
+            // flow, F_w = j rho_g/rho_a
+            const fvsPatchScalarField& jp = j.boundaryField()[patchi];
+            const scalarField rhoAIn
+            (
+                rhoA_.boundaryField()[patchi].patchInternalField()
+            );
+            const scalarField rhoGIn
+            (
+                rhoG_.boundaryField()[patchi].patchInternalField()
+            );
+            const scalarField& rhoAOut = rhoA_.boundaryField()[patchi];
+            const scalarField& rhoGOut = rhoG_.boundaryField()[patchi];
+            const scalarField hWIn
+            (
+                hW_.boundaryField()[patchi].patchInternalField()
+            );
+            const scalarField& hWOut = hW_.boundaryField()[patchi];
+            scalarField& qp = q_.boundaryFieldRef()[patchi];
+            scalarField& Fwp = Fw_.boundaryFieldRef()[patchi];
+            scalarField& Fap = Fa_.boundaryFieldRef()[patchi];
+            scalarField& FEp = FE_.boundaryFieldRef()[patchi];
+            FEp =
+               -kappa_.boundaryField()[patchi]
+               *T_.boundaryField()[patchi].snGrad()
+               *magSf.boundaryField()[patchi];
+            forAll(jp, facei)
+            {
+                const bool out = jp[facei] > 0;
+                const scalar rhoAf = out ? rhoAIn[facei] : rhoAOut[facei];
+                const scalar rhoGf = out ? rhoGIn[facei] : rhoGOut[facei];
+                const scalar stefan = stefanFactor(rhoAf, rhoGf);
+                qp[facei] = jp[facei]*stefan/max(rhoGf, SMALL);
+                Fwp[facei] = jp[facei]*stefan;
+                Fap[facei] = 0;
+                FEp[facei] += Fwp[facei]*(out ? hWIn[facei] : hWOut[facei]);
+            }
+        }
+        else if
+        (
+            kind_[patchi] != patchKind::open
+         && !mesh_.boundary()[patchi].coupled()
+        )
+        {
+            q_.boundaryFieldRef()[patchi] = 0;
+            Fw_.boundaryFieldRef()[patchi] = 0;
+            Fa_.boundaryFieldRef()[patchi] = 0;
+            // Conduction only
+            FE_.boundaryFieldRef()[patchi] =
+               -kappa_.boundaryField()[patchi]
+               *T_.boundaryField()[patchi].snGrad()
+               *magSf.boundaryField()[patchi];
+        }
+    }
+}
+
+
+void Foam::pendularState::checkOpenPatches() const
+{
+    // 0 <= p_w <= p_g and a relative humidity p_w/p_wsat(T) <= 1 (checked
+    // at the start and at every step, as T and p_w may be histories)
+    forAll(kind_, patchi)
+    {
+        if
+        (
+            kind_[patchi] != patchKind::open
+         && kind_[patchi] != patchKind::semiPermeable
+        )
+        {
+            continue;
+        }
+        const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
+        const fvPatchScalarField& pp = p_.boundaryField()[patchi];
+        const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+        forAll(pwp, facei)
+        {
+            const scalar pSat = medium_.saturationPressure(Tp[facei]);
+            const scalar RHb = pwp[facei]/max(pSat, VSMALL);
+            if
+            (
+                !(pp[facei] > 0) || pwp[facei] < 0 || pwp[facei] > pp[facei]
+             || RHb > 1 + 1e-9
+            )
+            {
+                FatalErrorInFunction
+                    << "Patch " << mesh_.boundary()[patchi].name()
+                    << " at t = " << mesh_.time().timeName() << " s: p_w = "
+                    << pwp[facei] << " Pa (" << pw_.objectPath() << ") with"
+                    << " p_g = " << pp[facei] << " Pa (" << p_.objectPath()
+                    << ") and T = " << Tp[facei] << " K: relative humidity "
+                    << RHb << nl
+                    << "    Valid: p_g > 0, 0 <= p_w <= p_g and p_w <="
+                    << " p_wsat(T) = " << pSat
+                    << " Pa (relative humidity in [0, 1])"
+                    << exit(FatalError);
+            }
+        }
+    }
+}
+
+
+void Foam::pendularState::startStep(const scalar dt)
+{
+    alphaOld_ = alphaL_.primitiveField();
+    stepDeltaT_ = dt;
+}
+
+
+void Foam::pendularState::storeOld()
+{
+    W0_ = W_.primitiveField();
+    A0_ = A_.primitiveField();
+    E0_ = E_.primitiveField();
+}
+
+
+Foam::scalar Foam::pendularState::relaxedVapourDensity
+(
+    const label celli,
+    const scalar Wc,
+    const scalar Tc
+) const
+{
+    scalar alpha, rhoW;
+    medium_.water().liquidAndVapour
+    (
+        Wc, medium_.saturation(Tc), medium_.porosity()[celli], p_[celli],
+        alphaOld_[celli], stepDeltaT_, alphaOld_[celli], alpha, rhoW
+    );
+    return rhoW;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::pendularState::waterResidual
+(
+    const scalar dt
+) const
+{
+    return
+        (W_.primitiveField() - W0_)/dt
+      + fvc::surfaceIntegrate(Fw_)().primitiveField();
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::pendularState::gasResidual
+(
+    const scalar dt
+) const
+{
+    return
+        (W_.primitiveField() + A_.primitiveField() - W0_ - A0_)/dt
+      + fvc::surfaceIntegrate(Fw_ + Fa_)().primitiveField();
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::pendularState::energyResidual
+(
+    const scalar dt
+) const
+{
+    return
+        (E_.primitiveField() - E0_)/dt
+      + fvc::surfaceIntegrate(FE_)().primitiveField();
+}
+
+
+// ************************************************************************* //

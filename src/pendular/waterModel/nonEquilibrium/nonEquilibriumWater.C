@@ -1,0 +1,165 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "nonEquilibriumWater.H"
+#include "checkedRead.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace waterModels
+{
+    defineTypeNameAndDebug(nonEquilibrium, 0);
+    addToRunTimeSelectionTable(waterModel, nonEquilibrium, dictionary);
+}
+}
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::waterModels::nonEquilibrium::nonEquilibrium
+(
+    const pendularMedium& medium,
+    const dictionary& coeffs
+)
+:
+    waterModel(medium, coeffs),
+    relaxationFactor_
+    (
+        checkedRead::getOrDefault
+        (
+            coeffs_, "relaxationFactor", dimless, 1, checkedRead::positive()
+        ).value()
+    )
+{
+    // The meniscus model must know the rate law: fail before any step
+    const meniscusCurvatureModel& meniscus = medium_.kelvin().meniscus();
+    Info<< "Water model B (non-equilibrium): c_B "
+        << meniscus.nonEquilibriumCoeff() << ", e_B "
+        << meniscus.nonEquilibriumExponent() << ", R_0 "
+        << meniscus.grainRadius() << " m, factor "
+        << relaxationFactor_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::waterModels::nonEquilibrium::relaxedAlphaL
+(
+    const scalar W,
+    const pendularMedium::saturationState& sat,
+    const scalar porosity,
+    const scalar pg,
+    const scalar alphaOld,
+    const scalar dt
+) const
+{
+    if (alphaOld <= 0 || W <= 0 || sat.liquidFree)
+    {
+        return 0;
+    }
+
+    const meniscusCurvatureModel& meniscus = medium_.kelvin().meniscus();
+    const scalar eB = meniscus.nonEquilibriumExponent();
+    const scalar rateScale =
+        medium_.binaryDiffusivity()
+       /(
+            relaxationFactor_*meniscus.nonEquilibriumCoeff()*medium_.rhoL()
+           *porosity*sqr(meniscus.grainRadius())*max(pg, SMALL)
+        );
+    const scalar RT = medium_.R()*sat.T;
+    const scalar Mw = medium_.Mw();
+    const scalar Ma = medium_.Ma();
+
+    // g(alpha) = alpha - alphaOld - dt d(alpha)/dt, increasing in alpha
+    auto g = [&](const scalar alpha)
+    {
+        const scalar rhoW = medium_.freeVapourDensity(W, alpha, porosity);
+        const scalar pw = rhoW*RT/Mw;
+        const scalar pwl =
+            sat.pSat*std::exp(sat.kelvinLength*meniscus.K(alpha));
+        const scalar rhoG = max(Ma*(pg - pw)/RT, scalar(0)) + rhoW;
+        return
+            alpha - alphaOld
+          - dt*(pw - pwl)*std::pow(alpha, -eB)*rhoG*rateScale;
+    };
+
+    // All the water as liquid (no vapour) bounds alpha above
+    const scalar alphaMax = min(W/(porosity*medium_.rhoL()), 1 - SMALL);
+    scalar hi = std::log(alphaMax);
+    scalar gHi = g(alphaMax);
+    if (gHi <= 0)
+    {
+        return alphaMax;
+    }
+    scalar lo = std::log(max(1e-300, 1e-30*alphaMax));
+    scalar gLo = g(std::exp(lo));
+    if (gLo >= 0)
+    {
+        return std::exp(lo);
+    }
+
+    // Regula falsi (Illinois) in s = ln(alpha)
+    label side = 0;
+    for (label iter = 0; iter < 200; ++iter)
+    {
+        const scalar s = (lo*gHi - hi*gLo)/(gHi - gLo);
+        const scalar gs = g(std::exp(s));
+        if (mag(gs) <= 1e-15*alphaOld || hi - lo < 1e-13)
+        {
+            return std::exp(s);
+        }
+        if (gs > 0)
+        {
+            hi = s;
+            gHi = gs;
+            if (side == 1)
+            {
+                gLo *= 0.5;
+            }
+            side = 1;
+        }
+        else
+        {
+            lo = s;
+            gLo = gs;
+            if (side == -1)
+            {
+                gHi *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    return std::exp(0.5*(lo + hi));
+}
+
+
+void Foam::waterModels::nonEquilibrium::liquidAndVapour
+(
+    const scalar W,
+    const pendularMedium::saturationState& sat,
+    const scalar porosity,
+    const scalar pg,
+    const scalar alphaOld,
+    const scalar dt,
+    const scalar alphaGuess,
+    scalar& alpha,
+    scalar& rhoW
+) const
+{
+    if (dt > 0)
+    {
+        // alpha relaxes towards equilibrium over the step
+        alpha = relaxedAlphaL(W, sat, porosity, pg, alphaOld, dt);
+        rhoW = medium_.freeVapourDensity(W, alpha, porosity);
+    }
+    else
+    {
+        equilibriumState(W, sat, porosity, alphaGuess, alpha, rhoW);
+    }
+}
+
+
+// ************************************************************************* //
