@@ -626,8 +626,14 @@ Foam::string Foam::scratchCase::launcher
         );
     }
 
+    // Its command (not the solver, not an environment assignment VAR=x)
     wordList exes(1, word(launcher.substr(0, launcher.find(' ')), false));
-    if (exes[0] == "{solver}")
+    if
+    (
+        exes[0] == "{solver}"
+     || exes[0].find('=') != std::string::npos
+     || (exes[0].find('/') != std::string::npos && isFile(exes[0]))
+    )
     {
         exes.clear();
     }

@@ -991,6 +991,13 @@ FitResult levenbergMarquardt::solve()
             {
                 const double actualRel = (S - St)/S;
                 const double predictedRel = predicted/S;
+                // Little progress: near the minimum finite differences
+                // take over (an updated Jacobian would only cost rejected
+                // trials there)
+                if (actualRel < opts_.broydenMinReduction)
+                {
+                    broydenLeft = 0;
+                }
                 p = pt;
                 u = toInternal(p);
                 r.swap(rt);
