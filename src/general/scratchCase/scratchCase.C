@@ -72,17 +72,6 @@ namespace
         ).count();
     }
 
-    //- Replace every occurrence of key in s by value
-    void replaceAll(std::string& s, const std::string& key, const std::string& value)
-    {
-        std::string::size_type i = 0;
-        while ((i = s.find(key, i)) != std::string::npos)
-        {
-            s.replace(i, key.size(), value);
-            i += value.size();
-        }
-    }
-
     const char* const placeholders[] = {"solver", "nProcs", "case", "log"};
 }
 
@@ -255,11 +244,11 @@ std::string Foam::scratchCase::solverCommand
     const fileName& log
 ) const
 {
-    std::string command(launcher_);
-    replaceAll(command, "{solver}", solver);
-    replaceAll(command, "{nProcs}", std::to_string(nProcs_));
-    replaceAll(command, "{case}", quoted(path_));
-    replaceAll(command, "{log}", quoted(log));
+    string command(launcher_);
+    command.replaceAll("{solver}", solver);
+    command.replaceAll("{nProcs}", std::to_string(nProcs_));
+    command.replaceAll("{case}", quoted(path_));
+    command.replaceAll("{log}", quoted(log));
     return command;
 }
 
