@@ -240,8 +240,14 @@ Foam::scalarField Foam::forwardModel::run
 
     log = scratch_/word("log." + solver_ + "." + Foam::name(runIndex));
 
-    const std::string command(copy_->solverCommand(solver_));
-    const std::string why(scratchCase::failure(copy_->execute(command, log), log));
+    const std::string command(copy_->solverCommand(solver_, log));
+    const std::string why
+    (
+        scratchCase::failure
+        (
+            copy_->execute(command, copy_->launcherLog(log)), log
+        )
+    );
 
     if (scratchCase::interrupted())
     {

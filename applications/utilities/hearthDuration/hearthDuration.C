@@ -57,6 +57,10 @@ Description
         // maxRuns      40;
         // workDir      "postProcessing/hearthDuration";  // in the case
         // mpirun       "mpirun --oversubscribe";   // + --allow-run-as-root
+        // launcher     "srun -n {nProcs} {solver} -parallel -case {case}";
+        //              // default '{solver} -case {case}' (nProcs 1) or
+        //              // '<mpirun> -np {nProcs} {solver} -parallel -case
+        //              // {case}' (see src/general/scratchCase)
                                                     //   when run by root
 
     Every entry is checked before the first run: bad input stops with a

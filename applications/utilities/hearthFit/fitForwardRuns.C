@@ -24,9 +24,12 @@ Foam::fitForwardRuns::fitForwardRuns
     decomposeEachRun_(false),
     csvRel_(),
     nProcs(1),
+    timeLimit(0),
     maxConcurrent(1),
     runs(0),
     failedRuns(0),
+    timedOutRuns(0),
+    reusedRuns(0),
     batchWall{0, 0},
     batchRuns{0, 0}
 {
@@ -35,8 +38,8 @@ Foam::fitForwardRuns::fitForwardRuns
         fwdDict,
         wordList
         ({
-            "solver", "nProcs", "mpirun", "maxConcurrentRuns",
-            "functionObject", "workDir"
+            "solver", "nProcs", "mpirun", "launcher", "timeLimit",
+            "maxConcurrentRuns", "functionObject", "workDir"
         })
     );
     solver =
@@ -45,11 +48,13 @@ Foam::fitForwardRuns::fitForwardRuns
     nProcs = checkedRead::getLabelOrDefault(fwdDict, "nProcs", 1, 1);
     // Parallel forward runs: each scratch copy is decomposed (decomposePar,
     // system/decomposeParDict of the case) and run as
-    // '<mpirun> -np N <solver> -parallel -case <copy>'
-    mpirun = scratchCase::launcher
+    // '<mpirun> -np N <solver> -parallel -case <copy>', or through the
+    // launcher template
+    launcher = scratchCase::launcher
     (
         fwdDict, nProcs, runTime.path(), wordList({"decomposePar"})
     );
+    timeLimit = scratchCase::readTimeLimit(fwdDict);
     maxConcurrent =
         checkedRead::getLabelOrDefault(fwdDict, "maxConcurrentRuns", 1, 1);
     foName = fwdDict.lookupOrDefault<word>("functionObject", "thermocouples");
@@ -161,9 +166,10 @@ void Foam::fitForwardRuns::makeCopies
             new scratchCase
             (
                 casePath, startName, runTime.startTime().value(),
-                workDir/word("scratch" + Foam::name(k)), nProcs, mpirun
+                workDir/word("scratch" + Foam::name(k)), nProcs, launcher
             )
         );
+        slots_[k].timeLimit(timeLimit);
     }
 
     // Parallel forward runs: the parameters live in dictionaries, which
@@ -207,6 +213,13 @@ bool Foam::fitForwardRuns::collect
     why = scratchCase::failure(status, dir/"log.run");
     if (why.size())
     {
+        // A launcher writing the solver's log itself: its own message too
+        const fileName launcherLog(dir/"log.run.launcher");
+        if (isFile(launcherLog))
+        {
+            why += "\n    the launcher's output:\n"
+              + scratchCase::errorMessage(launcherLog);
+        }
         return false;
     }
     return obs.residuals(dir/csvRel_, r, why);
@@ -221,38 +234,54 @@ void Foam::fitForwardRuns::evaluate
 )
 {
     const auto tBatch = std::chrono::steady_clock::now();
-    for (size_t b0 = 0; b0 < batch.size(); b0 += maxConcurrent)
+
+    // The runs to make: parameters not run successfully before, each once
+    auto key = [](const hearthFit::Vector& p)
     {
-        const size_t b1 =
-            std::min(batch.size(), b0 + size_t(maxConcurrent));
-        std::vector<int> status(b1 - b0, -1);
+        return std::vector<double>(p.data(), p.data() + p.size());
+    };
+    std::vector<size_t> todo;
+    {
+        std::map<std::vector<double>, size_t> inBatch;
+        for (size_t b = 0; b < batch.size(); ++b)
+        {
+            const std::vector<double> k(key(batch[b].parameters));
+            if (!made_.count(k) && inBatch.emplace(k, b).second)
+            {
+                todo.push_back(b);
+            }
+        }
+    }
+
+    for (size_t t0 = 0; t0 < todo.size(); t0 += maxConcurrent)
+    {
+        const size_t t1 =
+            std::min(todo.size(), t0 + size_t(maxConcurrent));
+        std::vector<int> status(t1 - t0, -1);
         const int decomposeFailed = -1000;
         // Prepare the copies (serial: OpenFOAM IO)
-        for (size_t b = b0; b < b1; ++b)
+        for (size_t t = t0; t < t1; ++t)
         {
-            scratchCase& copy = slots_[b - b0];
+            scratchCase& copy = slots_[t - t0];
             copy.removeResults();
             rm(copy.path()/"log.run");
-            params.write(copy.path(), batch[b].parameters);
+            params.write(copy.path(), batch[todo[t]].parameters);
             if (nProcs > 1 && decomposeEachRun_ && !copy.decompose())
             {
-                status[b - b0] = decomposeFailed;
+                status[t - t0] = decomposeFailed;
             }
         }
         // Run concurrently, each in its own process group
-        for (size_t b = b0; b < b1; ++b)
+        for (size_t t = t0; t < t1; ++t)
         {
-            scratchCase& copy = slots_[b - b0];
-            if (status[b - b0] == decomposeFailed) continue;
-            copy.start
-            (
-                copy.solverCommand(solver), copy.path()/"log.run"
-            );
+            scratchCase& copy = slots_[t - t0];
+            if (status[t - t0] == decomposeFailed) continue;
+            copy.startSolver(solver, copy.path()/"log.run");
         }
-        for (size_t b = b0; b < b1; ++b)
+        for (size_t t = t0; t < t1; ++t)
         {
-            if (status[b - b0] == decomposeFailed) continue;
-            status[b - b0] = slots_[b - b0].wait();
+            if (status[t - t0] == decomposeFailed) continue;
+            status[t - t0] = slots_[t - t0].wait();
         }
         // SIGINT/SIGTERM: the runs were killed, not failed
         if (scratchCase::interrupted())
@@ -260,23 +289,28 @@ void Foam::fitForwardRuns::evaluate
             throw fitInterrupted();
         }
         // Collect
-        for (size_t b = b0; b < b1; ++b)
+        for (size_t t = t0; t < t1; ++t)
         {
+            hearthFit::Evaluation& ev = batch[todo[t]];
             ++runs;
             std::string why;
-            const fileName& dir = slots_[b - b0].path();
-            batch[b].ok =
-                collect(dir, status[b - b0], batch[b].residuals, why, obs);
-            if (!batch[b].ok)
+            const fileName& dir = slots_[t - t0].path();
+            ev.ok = collect(dir, status[t - t0], ev.residuals, why, obs);
+            if (ev.ok)
+            {
+                made_[key(ev.parameters)] = ev.residuals;
+            }
+            else
             {
                 ++failedRuns;
+                if (status[t - t0] == scratchCase::timedOut) ++timedOutRuns;
                 // The reason, then the run's own error message
                 const std::string::size_type eol = why.find('\n');
                 Info<< "    forward run " << runs << " failed ("
                     << why.substr(0, eol).c_str() << "), parameters";
-                for (label j = 0; j < batch[b].parameters.size(); ++j)
+                for (label j = 0; j < ev.parameters.size(); ++j)
                 {
-                    Info<< ' ' << batch[b].parameters(j);
+                    Info<< ' ' << ev.parameters(j);
                 }
                 Info<< "; log kept as "
                     << workDir/word("failed." + Foam::name(runs)
@@ -291,12 +325,30 @@ void Foam::fitForwardRuns::evaluate
             }
         }
     }
+
+    // The others: from the runs made (before, or in this batch)
+    {
+        std::vector<bool> ran(batch.size(), false);
+        for (const size_t b : todo) ran[b] = true;
+        for (size_t b = 0; b < batch.size(); ++b)
+        {
+            if (ran[b]) continue;
+            const auto it = made_.find(key(batch[b].parameters));
+            ++reusedRuns;
+            batch[b].ok = it != made_.end();
+            if (batch[b].ok)
+            {
+                batch[b].residuals = it->second;
+            }
+        }
+    }
+
     const int kind = batch.size() > 1 ? 0 : 1;
     batchWall[kind] += std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - tBatch
     ).count();
-    batchRuns[kind] += batch.size();
+    batchRuns[kind] += todo.size();
 }
 
 

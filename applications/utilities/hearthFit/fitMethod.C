@@ -18,7 +18,7 @@ hearthFit::FitOptions Foam::readFitMethod(const dictionary& fitDict)
             ({
                 "type", "difference", "solverNoise", "relativeStep",
                 "maxIterations", "tolStep", "tolGradient", "tolCost",
-                "initialDamping", "confidence"
+                "initialDamping", "confidence", "jacobianUpdates"
             })
         );
     }
@@ -82,6 +82,12 @@ hearthFit::FitOptions Foam::readFitMethod(const dictionary& fitDict)
             checkedRead::getLabelOrDefault
             (
                 methodDict, "maxIterations", 30, 1
+            );
+        // Broyden-updated Jacobians after each finite-difference one
+        opts.jacobianUpdates =
+            checkedRead::getLabelOrDefault
+            (
+                methodDict, "jacobianUpdates", 0, 0
             );
         opts.initialDamping =
             checkedRead::getOrDefault

@@ -149,7 +149,7 @@ void Foam::fitReport::header(const hearthFit::FitOptions& opts) const
         << " sensors x " << obs_.times.size() << " times = "
         << obs_.sensors.size()*obs_.times.size() << " residuals" << nl
         << "    solver " << fwd_.solver;
-    if (fwd_.nProcs > 1) Info<< " on " << fwd_.nProcs << " ranks (" << fwd_.mpirun << ")";
+    if (fwd_.nProcs > 1) Info<< " on " << fwd_.nProcs << " ranks (" << fwd_.launcher << ")";
     Info<< ", up to " << fwd_.maxConcurrent
         << " concurrent runs, relative step " << opts.hRel << ", "
         << (opts.difference == hearthFit::Difference::forward
@@ -220,6 +220,11 @@ void Foam::fitReport::write
         << " runs in batches (Jacobians, up to " << fwd_.maxConcurrent
         << " at once), " << fwd_.batchWall[1] << " s for " << fwd_.batchRuns[1]
         << " single runs (trial steps)\n";
+    rep << "Jacobians " << res.finiteDifferenceJacobians << " by finite"
+        << " differences and " << res.broydenJacobians << " Broyden-updated"
+        << " (jacobianUpdates " << opts.jacobianUpdates << "), forward runs"
+        << " reused " << fwd_.reusedRuns << ", timed out "
+        << fwd_.timedOutRuns << "\n";
     rep.unsetf(std::ios::floatfield);
     rep << std::setprecision(8)
         << "cost (weighted residual sum of squares) " << res.cost

@@ -7,7 +7,9 @@
 #include "OSspecific.H"
 #include "OFstream.H"
 #include "IFstream.H"
+#include "checkedRead.H"
 
+#include <chrono>
 #include <csignal>
 #include <cerrno>
 #include <deque>
@@ -60,6 +62,17 @@ namespace
             }
         }
     }
+
+    //- Seconds of the steady clock
+    double now()
+    {
+        return std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now().time_since_epoch()
+        ).count();
+    }
+
+    const char* const placeholders[] = {"solver", "nProcs", "case", "log"};
 }
 
 
@@ -72,14 +85,22 @@ Foam::scratchCase::scratchCase
     const scalar startTime,
     const fileName& path,
     const label nProcs,
-    const string& mpirun
+    const string& launcher
 )
 :
     path_(path),
     startName_(startName),
     startTime_(startTime),
     nProcs_(nProcs),
-    mpirun_(mpirun),
+    launcher_
+    (
+        launcher.size() ? launcher
+      : nProcs > 1
+      ? string("mpirun --oversubscribe -np {nProcs} {solver} -parallel -case {case}")
+      : string("{solver} -case {case}")
+    ),
+    timeLimit_(0),
+    started_(0),
     pid_(0)
 {
     if (path_.find('\'') != string::npos)
@@ -217,15 +238,42 @@ std::string Foam::scratchCase::quoted(const std::string& s)
 }
 
 
-std::string Foam::scratchCase::solverCommand(const string& solver) const
+std::string Foam::scratchCase::solverCommand
+(
+    const string& solver,
+    const fileName& log
+) const
 {
-    if (nProcs_ > 1)
+    string command(launcher_);
+    command.replaceAll("{solver}", solver);
+    command.replaceAll("{nProcs}", std::to_string(nProcs_));
+    command.replaceAll("{case}", quoted(path_));
+    command.replaceAll("{log}", quoted(log));
+    return command;
+}
+
+
+Foam::fileName Foam::scratchCase::launcherLog(const fileName& log) const
+{
+    if (launcher_.find("{log}") != std::string::npos)
     {
-        return
-            mpirun_ + " -np " + std::to_string(nProcs_) + " " + solver
-          + " -parallel -case " + quoted(path_);
+        return log + ".launcher";
     }
-    return solver + " -case " + quoted(path_);
+    return log;
+}
+
+
+void Foam::scratchCase::startSolver
+(
+    const string& solver,
+    const fileName& log
+)
+{
+    if (launcherLog(log) != log)
+    {
+        rm(log);
+    }
+    start(solverCommand(solver, log), launcherLog(log));
 }
 
 
@@ -274,6 +322,7 @@ void Foam::scratchCase::start(const std::string& command, const fileName& log)
     }
     ::setpgid(pid, pid);
     pid_ = pid;
+    started_ = now();
     registerGroup(pid_);
     sigprocmask(SIG_SETMASK, &old, nullptr);
 
@@ -292,8 +341,34 @@ int Foam::scratchCase::wait()
         return -1;
     }
     int status = -1;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR)
-    {}
+    if (timeLimit_ > 0)
+    {
+        // Poll until the command ends or its time is up: then its whole
+        // group is stopped (SIGTERM: srun and mpirun stop their tasks),
+        // and killed below if it does not end
+        while (true)
+        {
+            const pid_t w = ::waitpid(pid_, &status, WNOHANG);
+            if (w == pid_ || (w < 0 && errno != EINTR))
+            {
+                break;
+            }
+            if (now() - started_ > timeLimit_)
+            {
+                ::kill(-pid_, SIGTERM);
+                while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR)
+                {}
+                status = timedOut;
+                break;
+            }
+            ::usleep(50000);
+        }
+    }
+    else
+    {
+        while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR)
+        {}
+    }
 
     // Whatever the command left in its group (a solver whose shell was
     // killed, mpirun still stopping its ranks, which run in groups of
@@ -332,7 +407,12 @@ bool Foam::scratchCase::decompose()
 std::string Foam::scratchCase::failure(const int status, const fileName& log)
 {
     std::string why;
-    if (status != 0)
+    if (status == timedOut)
+    {
+        why = "time limit (keyword timeLimit) exceeded: its process group"
+            " killed";
+    }
+    else if (status != 0)
     {
         if (status > 0 && WIFEXITED(status))
         {
@@ -473,22 +553,97 @@ Foam::string Foam::scratchCase::launcher
           : "mpirun --oversubscribe"
         )
     );
-    if (nProcs <= 1)
+    const bool given = dict.found("launcher");
+    const string launcher
+    (
+        given ? dict.get<string>("launcher")
+      : nProcs > 1
+      ? string(mpirun + " -np {nProcs} {solver} -parallel -case {case}")
+      : string("{solver} -case {case}")
+    );
+    const word key(given ? "launcher" : "mpirun");
+    auto bad = [&](const std::string& why)
     {
-        return mpirun;
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << key << "' = '" << launcher.c_str() << "': "
+            << why.c_str() << ". Expected a shell command with the"
+            << " placeholders {solver} and {case} (and optionally {nProcs},"
+            << " {log}), e.g. \"srun -n {nProcs} {solver} -parallel -case"
+            << " {case}\"" << nl << exit(FatalIOError);
+    };
+
+    // The placeholders: {solver} and {case} needed, no unknown {name}
+    // (a shell's ${VAR} is not one)
+    for (const char* need : {"{solver}", "{case}"})
+    {
+        if (launcher.find(need) == std::string::npos)
+        {
+            bad(std::string("no ") + need);
+        }
+    }
+    for
+    (
+        std::string::size_type b = launcher.find('{');
+        b != std::string::npos;
+        b = launcher.find('{', b + 1)
+    )
+    {
+        if (b > 0 && launcher[b - 1] == '$') continue;
+        const std::string::size_type e = launcher.find('}', b);
+        const std::string name
+        (
+            e == std::string::npos ? launcher.substr(b)
+          : launcher.substr(b + 1, e - b - 1)
+        );
+        bool known = false;
+        for (const char* p : placeholders) known = known || name == p;
+        if (!known)
+        {
+            bad
+            (
+                "unknown placeholder {" + name + "} (valid: {solver},"
+                " {nProcs}, {case}, {log})"
+            );
+        }
+    }
+    if (nProcs > 1 && launcher.find("-parallel") == std::string::npos)
+    {
+        bad
+        (
+            "nProcs " + std::to_string(nProcs) + " > 1 but no -parallel"
+            " for the solver"
+        );
     }
 
-    wordList exes(1, word(mpirun.substr(0, mpirun.find(' ')), false));
-    exes.append(tools);
+    // Its command (not the solver, not an environment assignment VAR=x)
+    wordList exes(1, word(launcher.substr(0, launcher.find(' ')), false));
+    if
+    (
+        exes[0] == "{solver}"
+     || exes[0].find('=') != std::string::npos
+     || (exes[0].find('/') != std::string::npos && isFile(exes[0]))
+    )
+    {
+        exes.clear();
+    }
+    if (nProcs > 1)
+    {
+        exes.append(tools);
+    }
     for (const word& exe : exes)
     {
         if (exe.empty() || !onPath(exe))
         {
             FatalIOErrorInFunction(dict)
-                << "Keyword 'nProcs' = " << nProcs << " needs '" << exe
-                << "', not found on the PATH (keyword 'mpirun' = '"
-                << mpirun.c_str() << "')" << nl << exit(FatalIOError);
+                << "Keyword '" << key << "' = '" << launcher.c_str()
+                << "' (nProcs " << nProcs << ") needs '" << exe
+                << "', not found on the PATH" << nl << exit(FatalIOError);
         }
+    }
+
+    if (nProcs <= 1)
+    {
+        return launcher;
     }
 
     label nDomains = 0;
@@ -507,7 +662,17 @@ Foam::string Foam::scratchCase::launcher
             << " file or keyword): valid are 1 (serial) or"
             << " numberOfSubdomains" << nl << exit(FatalIOError);
     }
-    return mpirun;
+    return launcher;
+}
+
+
+Foam::scalar Foam::scratchCase::readTimeLimit(const dictionary& dict)
+{
+    return
+        checkedRead::getOrDefault
+        (
+            dict, "timeLimit", dimTime, 0, checkedRead::nonNegative()
+        ).value();
 }
 
 

@@ -753,6 +753,14 @@ FitResult levenbergMarquardt::solve()
     Matrix Jp;
     bool JAtP = false;       // Jp was evaluated at the current p
 
+    // Broyden updates between finite-difference Jacobians (FitOptions::
+    // jacobianUpdates): JuB, the Jacobian in the internal variables
+    // updated with every trial evaluated, is used for up to that many
+    // iterations after each finite-difference one
+    Matrix Ju, JuB;
+    int broydenLeft = 0;
+    int fdJacobians = 0, broydenJacobians = 0;
+
     {
         FitProgress pr;
         pr.iteration = 0;
@@ -785,18 +793,31 @@ FitResult levenbergMarquardt::solve()
             break;
         }
 
-        if (!jacobian(p, r, opts_.difference, opts_.hRel, Jp))
+        const bool broyden = broydenLeft > 0;
+        if (broyden)
         {
-            status = FitStatus::jacobianFailed;
-            detail = "a Jacobian column failed on both sides and with a"
-                " ten times smaller step";
-            JAtP = false;
-            break;
+            Ju = JuB;
+            --broydenLeft;
+            ++broydenJacobians;
         }
+        else
+        {
+            if (!jacobian(p, r, opts_.difference, opts_.hRel, Jp))
+            {
+                status = FitStatus::jacobianFailed;
+                detail = "a Jacobian column failed on both sides and with"
+                    " a ten times smaller step";
+                JAtP = false;
+                break;
+            }
+            JAtP = true;
+            Ju = Jp*dpdu(u).asDiagonal();
+            broydenLeft = opts_.jacobianUpdates;
+            ++fdJacobians;
+        }
+        JuB = Ju;
         ++iter;
-        JAtP = true;
 
-        const Matrix Ju = Jp*dpdu(u).asDiagonal();
         const Vector g = Ju.transpose()*r;
 
         // Active set: on a bound with the gradient pointing out of the box
@@ -826,6 +847,14 @@ FitResult levenbergMarquardt::solve()
 
         if (gScaled <= opts_.tolGradient)
         {
+            if (broyden)
+            {
+                // Converged on an updated Jacobian: check with a
+                // finite-difference one at the same point
+                broydenLeft = 0;
+                --iter;
+                continue;
+            }
             status = FitStatus::gradientTolerance;
             break;
         }
@@ -859,6 +888,7 @@ FitResult levenbergMarquardt::solve()
         const long failedBefore = failed_;
         const Vector r0 = r;          // at the iteration's start
         const double S0 = S;
+        const double lambda0 = lambda, nu0 = nu;
         double alphaGN = 1;
         std::string event;
 
@@ -939,6 +969,21 @@ FitResult levenbergMarquardt::solve()
                     St = rt.squaredNorm();
                     rho = predicted > 0 ? (S - St)/predicted : -1;
                     accepted = gn ? St < S : (St < S && rho > 1e-4);
+
+                    // Broyden's rank-one secant update (Broyden 1965;
+                    // Madsen, Nielsen & Tingleff 2004, section 3.4):
+                    // JuB += (r(u + s) - r(u) - JuB s) s^T/(s^T s), with
+                    // every evaluated trial, accepted or not; after an
+                    // accepted one JuB stands at the new point
+                    if (opts_.jacobianUpdates > 0)
+                    {
+                        const double ss = step.squaredNorm();
+                        if (ss > 0)
+                        {
+                            JuB.noalias() +=
+                                ((rt - r - JuB*step)/ss)*step.transpose();
+                        }
+                    }
                 }
             }
 
@@ -946,6 +991,13 @@ FitResult levenbergMarquardt::solve()
             {
                 const double actualRel = (S - St)/S;
                 const double predictedRel = predicted/S;
+                // Little progress: near the minimum finite differences
+                // take over (an updated Jacobian would only cost rejected
+                // trials there)
+                if (actualRel < opts_.broydenMinReduction)
+                {
+                    broydenLeft = 0;
+                }
                 p = pt;
                 u = toInternal(p);
                 r.swap(rt);
@@ -1032,6 +1084,33 @@ FitResult levenbergMarquardt::solve()
             }
         }
 
+        // A stop on small or failed steps of an updated Jacobian is not
+        // trusted: a finite-difference Jacobian at the point found decides
+        // (the damping of the iteration's start restored if the steps
+        // failed)
+        if
+        (
+            broyden && done
+         && (
+                status == FitStatus::stepTolerance
+             || status == FitStatus::costTolerance
+             || status == FitStatus::dampingLimit
+            )
+        )
+        {
+            done = false;
+            status = FitStatus::maxIterations;
+            detail.clear();
+            broydenLeft = 0;
+            if (event != "accepted")
+            {
+                lambda = lambda0;
+                nu = nu0;
+            }
+            event += event.empty() ? "" : ", ";
+            event += "updated Jacobian stopped: finite differences next";
+        }
+
         // Stopped on a short step while longer trials failed: at a
         // minimum the undamped (Gauss-Newton) model predicts no decrease
         // (r orthogonal to the columns of J); at the edge of a failing
@@ -1069,6 +1148,7 @@ FitResult levenbergMarquardt::solve()
         pr.failedEvaluations = failed_;
         pr.batches = batches_;
         pr.rejected = rejected;
+        pr.broyden = broyden;
         pr.event = done ? event + (event.empty() ? "" : ", ")
             + "stop: " + statusName(status) : event;
         report(pr);
@@ -1080,6 +1160,8 @@ FitResult levenbergMarquardt::solve()
     res.residuals = r;
     res.cost = S;
     res.iterations = iter;
+    res.finiteDifferenceJacobians = fdJacobians;
+    res.broydenJacobians = broydenJacobians;
     res.damping = lambda;
     res.message = statusName(status) + (detail.empty() ? "" : ": " + detail);
 

@@ -1,0 +1,97 @@
+"""Broyden-updated Jacobians (jacobianUpdates 3) against full finite-
+difference Jacobians (see run). Checks, for the test fit (full vs
+broyden) and the tutorial fit (fitDryHearthFull.csv: the parameters.csv of
+tutorials/fitDryHearth's own fit, full Jacobians, fixed seeds, so
+reproduced to the digit as tests/tutorialFitDryHearth checks):
+- converged; Broyden-updated Jacobians were used (report: 'N
+  Broyden-updated' with N > 0);
+- the same estimates within 0.1 standard error (of the full fit): both
+  stop within about tolStep (1e-6 relative to max(|p|, typical)) of the
+  same minimum, far below 0.1 standard error (the test fit's standard
+  errors are 7e-4 (k_s) to 5e-3 (offsets, of typical 1 mm) relative);
+  the standard errors within 1e-3 relative (both from a final central
+  finite-difference Jacobian at estimates that close);
+- the forward runs the report states are the runs made (the counting
+  solver's count), and the report's Jacobian counts add up to its
+  iterations;
+- fewer runs with Broyden updates than with full Jacobians (the figures
+  printed in the README: full and Broyden counts, both fits)."""
+import csv
+import re
+import hearthcheck as hc
+
+c = hc.Check('hearthFitBroyden')
+
+
+def params(path):
+    with open(path) as f:
+        return {r['name']: {k: float(v) for k, v in r.items() if k != 'name'}
+                for r in csv.DictReader(f)}
+
+
+def report(case):
+    with open(case + '/postProcessing/hearthFit/report.txt') as f:
+        return f.read()
+
+
+def counts(case):
+    rep = report(case)
+    it = int(re.search(r'^iterations (\d+)', rep, re.M).group(1))
+    runs = int(re.search(r'forward runs (\d+) ', rep).group(1))
+    fd, br = map(int, re.search(r'Jacobians (\d+) by finite differences '
+                                r'and (\d+) Broyden-updated', rep).groups())
+    with open(case + '/runCount') as f:
+        made = len(f.read().split())
+    return it, runs, fd, br, made
+
+
+tut = 'tutorials/fitDryHearth'
+fits = (('test fit', 'full', 'broyden',
+         params('full/postProcessing/hearthFit/parameters.csv')),
+        ('fitDryHearth', None, tut,
+         params(__import__('os').path.join(
+             __import__('os').path.dirname(__file__),
+             'fitDryHearthFull.csv'))))
+figures = {}
+for name, fullCase, case, pf in fits:
+    cases = ([fullCase] if fullCase else []) + [case]
+    for cs in cases:
+        it, runs, fd, br, made = counts(cs)
+        c.true('%s %s: converged' % (name, cs), '(converged)' in report(cs))
+        c.true('%s %s: %d runs reported = %d runs made'
+               % (name, cs, runs, made), runs == made)
+        c.true('%s %s: Jacobians %d + %d = %d iterations'
+               % (name, cs, fd, br, it), fd + br == it)
+        figures[(name, cs)] = runs
+        print('%s %s: %d iterations, %d finite-difference and %d Broyden '
+              'Jacobians, %d forward runs' % (name, cs, it, fd, br, runs))
+    c.true('%s: Broyden-updated Jacobians used' % name, counts(case)[3] > 0)
+    pb = params(case + '/postProcessing/hearthFit/parameters.csv')
+    worst = 0
+    for k in pf:
+        d = abs(pb[k]['estimate'] - pf[k]['estimate'])/pf[k]['std_error']
+        worst = max(worst, d)
+        c.le('%s %s: |Broyden - full|/std error (%.10g, %.10g)'
+             % (name, k, pb[k]['estimate'], pf[k]['estimate']), d, 0.1)
+        c.le('%s %s: std error |Broyden - full|/full' % (name, k),
+             abs(pb[k]['std_error'] - pf[k]['std_error'])/pf[k]['std_error'],
+             1e-3)
+    print('%s: largest |Broyden - full| %.2g standard errors' % (name, worst))
+
+# The tutorial's full fit: 82 runs (its README, tests/tutorialFitDryHearth)
+figures[('fitDryHearth', 'full')] = 82
+for name in ('test fit', 'fitDryHearth'):
+    full = figures[(name, 'full')]
+    brd = figures[(name, 'broyden' if name == 'test fit' else tut)]
+    c.true('%s: fewer runs with Broyden updates (%d < %d)' % (name, brd, full),
+           brd < full)
+
+# The README's figures
+readme = open(__import__('os').path.join(
+    __import__('os').path.dirname(__file__), '../../README.md')).read()
+for name, full, brd in (('test fit', figures[('test fit', 'full')],
+                         figures[('test fit', 'broyden')]),
+                        ('fitDryHearth', 82, figures[('fitDryHearth', tut)])):
+    text = '%d forward runs instead of %d' % (brd, full)
+    c.true('README states "%s" (%s)' % (text, name), text in readme)
+c.done()
