@@ -87,7 +87,7 @@ def report(log):
     """The rows {key: (min, max) or None} and the warnings of a log"""
     lines = open(log).read().splitlines()
     start = [i for i, l in enumerate(lines) if l.startswith('Start-up report of ')]
-    end = [i for i, l in enumerate(lines) if l == 'End of start-up report']
+    end = [i for i, l in enumerate(lines) if l == 'start-up report ends']
     if len(start) != 1 or len(end) != 1:
         return None, None
     rows = {}
@@ -251,7 +251,7 @@ def checkAll(scratch):
     if len(first) == 1:
         for l in lines[first[0]:]:
             example.append(l)
-            if l == 'End of start-up report':
+            if l == 'start-up report ends':
                 break
     logLines = open(os.path.join(logs['ahc'][0], 'log.ahcFoam')).read() \
         .splitlines()

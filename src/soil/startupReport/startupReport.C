@@ -192,7 +192,7 @@ void Foam::startupReport::write(Ostream& os) const
     {
         os  << row.c_str() << nl;
     }
-    os  << "End of start-up report" << nl;
+    os  << "start-up report ends" << nl;
     for (const string& warning : warnings_)
     {
         os  << "--> FOAM Warning : start-up: " << warning.c_str() << nl;
