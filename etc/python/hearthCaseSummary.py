@@ -6,7 +6,8 @@
   (postProcessing/thermocouples/0/sensors.csv);
 - the depth of each isotherm of TMax under the centre of the fire and
   under its rim (90 % of its radius), measured from the fire's surface
-  (hearthAlteration's summary.csv at the last time);
+  (hearthAlteration's summary.csv at the last time, plus lineStart of
+  hearthCaseInfo where the lines start under the surface: scannedPit);
 - the energy balance of the whole hearth: the solver's balance of the mesh
   times the factor from the mesh to the whole hearth (pi/tan(angle/2) for
   an axisymmetric wedge, 4 for a quarter pit, 1 otherwise:
@@ -52,9 +53,11 @@ def main(case):
         figures += [('peak_' + name, p, 'C'), ('peakTime_' + name, tp/3600, 'h')]
     w('')
     rows = ht.alteration_summary(case)
+    below = float(inf.get('lineStart', 0))    # 0 m: an isotherm not found
     w('%-20s %12s %12s' % ('isotherm of TMax', 'centre [cm]', 'rim [cm]'))
     for r in rows:
-        c, e = float(r['depth_centre_m']), float(r['depth_rim_m'])
+        c, e = (float(r[k]) + below if float(r[k]) > 0 else 0.0
+                for k in ('depth_centre_m', 'depth_rim_m'))
         w('%-20s %12.2f %12.2f' % ('%g C' % float(r['threshold_C']),
                                    100*c, 100*e))
         figures += [('depthCentre_%gC' % float(r['threshold_C']), 100*c, 'cm'),

@@ -23,7 +23,11 @@ def check(cond, what):
 with open(os.path.join(case, 'constant', 'polyMesh', 'boundary')) as f:
     text = f.read()
 mesh = set(re.findall(r'^\s{4}(\w+)\s*\n\s{4}\{', text, re.M))
-for field in sorted(os.listdir(os.path.join(case, '0'))):
+# snappyHexMesh's layer diagnostics (scannedPit's Allmesh) are not fields
+# of the solver
+LAYER_FIELDS = ('nSurfaceLayers', 'thickness', 'thicknessFraction')
+for field in sorted(set(os.listdir(os.path.join(case, '0')))
+                    - set(LAYER_FIELDS)):
     with open(os.path.join(case, '0', field)) as f:
         bf = f.read().split('boundaryField', 1)[1]
     names = set(re.findall(r'^\s{4}(\w+)\s*\n\s{4}\{', bf, re.M))
