@@ -13,6 +13,8 @@ the sensors d0.25 .. d2 and both times; d0 reads the face value):
     cellPoint (old default)     13.8 K        7.4 K      (d0; ratio 2: 1st order)
     cellPointWallModified       13.8 K        7.4 K      (no wall patch: = cellPoint)
     cell, cellPatchConstrained  20.6 K        10.3 K     (d0, d1; cell value)
+    cellLinear without the boundary normal gradient (Gauss only, planted
+    bug tests/lib/mutations/cellLinearGaussOnly): d0 0.030 K at 4 mm
 
 Tolerances: cellLinear's error is that of the cell values next to the
 sensor (the solver's: at 1 h, 4 mm cells, -0.030, -0.089, -0.145, -0.198 K
@@ -30,6 +32,9 @@ measured < 1e-3 K, 1e-8 m below the surface the exact value is 1.3e-4 K
 below the face value). cellPoint must be off by more than 3 K at d0 on
 both meshes (measured 13.8 K and 7.4 K at 1 h): the bias of its boundary
 point values, averaged over the cold wedge faces, is first order in h.
+
+Symmetry: the 4 mm column with symmetry front/back patches (a cell next
+to a symmetry plane) gives the same solution; the same tolerances apply.
 
 Serial = parallel: the 2 mm case on 2 ranks split at 0.15 m depth (sensors
 mid- and mid+ either side of the processor faces). The linear solver
@@ -90,6 +95,21 @@ coarse = max(errors[75, 'cellLinear'][n] for n in shallow[1:])
 fine = max(errors[150, 'cellLinear'][n] for n in shallow[1:])
 c.true('cellLinear: error ratio 4 mm / 2 mm >= 3 (2nd order: 4)',
        coarse/fine >= 3.0, '%.3g' % (coarse/fine))
+
+# symmetry instead of wedge front/back: the same 1-D solution and readings
+for s in ('cellPoint', 'cellLinear'):
+    w, y = read('nz75', s), read('nzsym75', s)
+    dmax = max(abs(w[t][n] - y[t][n]) for t in times for n in shallow)
+    print('  symmetry - wedge, %s: %.3g K' % (s, dmax))
+ysym = read('nzsym75', 'cellLinear')
+e = max(abs(ysym[t][n] - hc.erfc_solution(depth(n, 0.004), t, T0, Tw,
+        alpha)) for t in times for n in shallow)
+c.le('cellLinear, 4 mm cells, symmetry sides: max |T - erfc| [K]', e, 0.3)
+ysym = read('nzsym75', 'cellPoint')
+e = max(abs(ysym[t]['d0'] - hc.erfc_solution(1e-8, t, T0, Tw, alpha))
+        for t in times)
+c.true('cellPoint (old default), symmetry sides: |T - erfc| at depth 0 '
+       '> 3 K (it fails)', e > 3.0, '%.4g K' % e)
 
 diff = {}
 for s in ('cell', 'cellLinear'):
