@@ -6,6 +6,7 @@
 #include "gaussGrad.H"
 #include "linear.H"
 #include "polyPatch.H"
+#include "zeroGradientFvPatchField.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -26,6 +27,8 @@ void Foam::interpolationCellLinear<Type>::calcGrad()
 
     const volVectorField& C = mesh.C();
 
+    boundaryCell_.setSize(mesh.nCells(), false);
+
     for (const fvPatchField<Type>& pf : psi.boundaryField())
     {
         const fvPatch& p = pf.patch();
@@ -41,6 +44,17 @@ void Foam::interpolationCellLinear<Type>::calcGrad()
         }
 
         const labelUList& faceCells = p.faceCells();
+
+        // A zeroGradient patch (adiabatic side or far boundary) does not
+        // make its cells boundary cells: its face values are the cell
+        // values, as cellPoint's point values there
+        if (!isA<zeroGradientFvPatchField<Type>>(pf))
+        {
+            for (const label celli : faceCells)
+            {
+                boundaryCell_[celli] = true;
+            }
+        }
         const vectorField nf(p.nf());
         const vectorField& Cf = p.Cf();
 
@@ -69,6 +83,8 @@ Foam::interpolationCellLinear<Type>::interpolationCellLinear
 )
 :
     interpolation<Type>(psi),
+    cellPoint_(psi),
+    boundaryCell_(),
     grad_()
 {
     calcGrad();
@@ -85,6 +101,11 @@ Type Foam::interpolationCellLinear<Type>::interpolate
     const label facei
 ) const
 {
+    if (!boundaryCell_[celli])
+    {
+        return cellPoint_.interpolate(position, celli, facei);
+    }
+
     return
         this->psi_[celli]
       + ((position - this->pMesh_.cellCentres()[celli]) & grad_[celli]);
