@@ -3,8 +3,8 @@ column (run) against T = T0 + (Tw - T0) erfc(z/(2 sqrt(alpha t))), at 1 h
 and 2 h, for each interpolation scheme of the thermocouples function object.
 
 cellLinear (src/functionObjects/thermocouples/interpolationCellLinear:
-linear from the cell centre in the cells of the fire surface, cellPoint
-elsewhere) is checked; the other schemes are printed, and the old default
+linear from the cell centre between the fire surface and the centres of
+its cells, cellPoint elsewhere) is checked; the other schemes are printed, and the old default
 cellPoint must exceed the tolerance at the shallow sensors (the test
 discriminates: it fails with the old default). A sensor on a face (d1, d2)
 is read from the deeper cell (cellPoint's value for cellLinear). Measured

@@ -27,7 +27,7 @@ void Foam::interpolationCellLinear<Type>::calcGrad()
 
     const volVectorField& C = mesh.C();
 
-    boundaryCell_.setSize(mesh.nCells(), false);
+    boundaryNormals_.setSize(mesh.nCells());
 
     for (const fvPatchField<Type>& pf : psi.boundaryField())
     {
@@ -48,14 +48,16 @@ void Foam::interpolationCellLinear<Type>::calcGrad()
         // A zeroGradient patch (adiabatic side or far boundary) does not
         // make its cells boundary cells: its face values are the cell
         // values, as cellPoint's point values there
+        const vectorField nf(p.nf());
+
         if (!isA<zeroGradientFvPatchField<Type>>(pf))
         {
-            for (const label celli : faceCells)
+            forAll(faceCells, i)
             {
-                boundaryCell_[celli] = true;
+                boundaryNormals_[faceCells[i]].append(nf[i]);
             }
         }
-        const vectorField nf(p.nf());
+
         const vectorField& Cf = p.Cf();
 
         forAll(pf, i)
@@ -84,7 +86,7 @@ Foam::interpolationCellLinear<Type>::interpolationCellLinear
 :
     interpolation<Type>(psi),
     cellPoint_(psi),
-    boundaryCell_(),
+    boundaryNormals_(),
     grad_()
 {
     calcGrad();
@@ -101,14 +103,19 @@ Type Foam::interpolationCellLinear<Type>::interpolate
     const label facei
 ) const
 {
-    if (!boundaryCell_[celli])
+    const vector dx(position - this->pMesh_.cellCentres()[celli]);
+
+    // Linear between the cell centre and a physical boundary face of the
+    // cell (the point on the face's side of the centre)
+    for (const vector& n : boundaryNormals_[celli])
     {
-        return cellPoint_.interpolate(position, celli, facei);
+        if ((n & dx) >= 0)
+        {
+            return this->psi_[celli] + (dx & grad_[celli]);
+        }
     }
 
-    return
-        this->psi_[celli]
-      + ((position - this->pMesh_.cellCentres()[celli]) & grad_[celli]);
+    return cellPoint_.interpolate(position, celli, facei);
 }
 
 
