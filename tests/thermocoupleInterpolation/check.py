@@ -6,7 +6,9 @@ cellLinear (src/functionObjects/thermocouples/interpolationCellLinear:
 linear from the cell centre between the fire surface and the centres of
 its cells, cellPoint elsewhere) is checked; the other schemes are printed, and the old default
 cellPoint must exceed the tolerance at the shallow sensors (the test
-discriminates: it fails with the old default). A sensor on a face (d1, d2)
+discriminates: it fails with the old default). The default of the
+thermocouples function object (no interpolationScheme) must read exactly
+as cellLinear. A sensor on a face (d1, d2)
 is read from the deeper cell (cellPoint's value for cellLinear). Measured
 on 2026-12-01, largest |error| over both times:
 
@@ -117,6 +119,12 @@ e = max(abs(ysym[t]['d0'] - hc.erfc_solution(1e-8, t, T0, Tw, alpha))
         for t in times)
 c.true('cellPoint (old default), symmetry sides: |T - erfc| at depth 0 '
        '> 3 K (it fails)', e > 3.0, '%.4g K' % e)
+
+# the default (no interpolationScheme keyword) is cellLinear
+for nz in (75, 150):
+    dflt, lin = read('nz%d' % nz, 'default'), read('nz%d' % nz, 'cellLinear')
+    d = max(abs(dflt[t][n] - lin[t][n]) for t in times for n in lin[t])
+    c.le('default scheme - cellLinear, %g mm cells [K]' % (300.0/nz), d, 0)
 
 diff = {}
 for s in ('cell', 'cellLinear'):
