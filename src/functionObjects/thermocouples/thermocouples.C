@@ -522,7 +522,7 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     fieldName_ = dict.getOrDefault<word>("field", "T");
 
     interpolationScheme_ =
-        dict.getOrDefault<word>("interpolationScheme", "cellPoint");
+        dict.getOrDefault<word>("interpolationScheme", "cellLinear");
     if
     (
         !interpolation<scalar>::dictionaryConstructorTablePtr_
