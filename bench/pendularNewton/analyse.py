@@ -25,9 +25,11 @@ def interp(z, zs, vs):
 print('1-D column, 12 h of heating (model A); T - reference [K] at 1, 2, 5 cm')
 print('  %-22s %8s %6s %6s %7s %6s  %s' % ('run', 'CPU [s]', 'steps', 'rej.', 'iter.', 'it/st',
                                            '1 h | 3 h | 12 h'))
-for case, N, refN in (('column100', 100, 200), ('column500', 500, 500)):
+for case, N, refN, runs in (
+        ('column100', 100, 200, ('segregated', 'newton')),
+        ('column500', 500, 500, ('segregated', 'newton', 'newton_dT1', 'newton_dT4'))):
     depth = [H - (i + 0.5)*H/N for i in range(N)]
-    for engine in ('segregated', 'newton'):
+    for engine in runs:
         d = os.path.join(work, '%s_%s' % (case, engine))
         try:
             u, s, e, m = open(os.path.join(d, 'time.txt')).read().split()[:4]

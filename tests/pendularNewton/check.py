@@ -1,7 +1,7 @@
 """pendularFoam, engine newton: balances closed to 1e-10 (Newton reaches
 the round-off floor of the residuals: measured 1e-11 relative at worst),
 on average at most 4 Newton iterations per step on the report's column
-(the issue's target; measured 2.7), Newton's quadratic convergence near
+(the issue's target; measured 2.4), Newton's quadratic convergence near
 the solution on that column (below), and the serial and 2-rank runs of
 the column of tests/pendularParallel equal within 100 times its
 nonlinear tolerances (TTol 1e-7 K, pTol 1e-4 Pa, WTol 1e-11 of the water:
@@ -12,8 +12,8 @@ r1 > r2 above the tolerances (the largest scaled residual of the verbose
 'Newton k:' lines, each iterate a plain Newton update: no cell chopped or
 projected), the order ln(r2/r1)/ln(r1/r0) is 2 for Newton with an exact
 Jacobian and 1 for a linearly converging iteration (a lagged or wrong
-Jacobian, a fixed point). Measured (2026-12-01, 100 cells, 12 h): 380
-such steps of 1688, median order 1.99, tenth percentile 1.56; required:
+Jacobian, a fixed point). Measured (2026-12-02, 100 cells, 12 h): 254
+such steps of 1688, median order 1.97, tenth percentile 1.59; required:
 at least 50 steps and median at least 1.8 (the forward-difference
 Jacobian's 1e-8 relative error and the residuals' round-off bend the
 last ratios)."""

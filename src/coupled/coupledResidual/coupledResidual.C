@@ -297,6 +297,59 @@ void Foam::coupledResidual::residual
 }
 
 
+void Foam::coupledResidual::cellResidual
+(
+    const label celli,
+    const scalarField& x,
+    const scalarField& xNbr,
+    scalar* Rc
+) const
+{
+    // The terms of evaluate() that touch cell celli, in the same order
+    const label B = nBlock_;
+    const label nInternal = mesh_.nInternalFaces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    scalar F[64];
+
+    cellTerm(celli, &x[B*celli], Rc);
+    for (const label facei : mesh_.cells()[celli])
+    {
+        if (facei < nInternal)
+        {
+            faceFlux(facei, &x[B*own[facei]], &x[B*nei[facei]], F);
+            const scalar sign = own[facei] == celli ? 1 : -1;
+            for (label k = 0; k < B; ++k)
+            {
+                Rc[k] += sign*F[k];
+            }
+            continue;
+        }
+        const polyPatch& pp =
+            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)];
+        if (isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        if (pp.coupled())
+        {
+            faceFlux
+            (
+                facei, &x[B*celli], &xNbr[B*(facei - nInternal)], F
+            );
+        }
+        else
+        {
+            boundaryFlux(facei, &x[B*celli], F);
+        }
+        for (label k = 0; k < B; ++k)
+        {
+            Rc[k] += F[k];
+        }
+    }
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::coupledResidual::jacobian
 (
     const scalarField& x,

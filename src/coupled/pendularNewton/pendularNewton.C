@@ -51,6 +51,88 @@ Foam::scalar Foam::pendularNewton::kinkWater
 }
 
 
+bool Foam::pendularNewton::solveCellWater
+(
+    const pendularResidual& res,
+    const label c,
+    const scalar tol,
+    scalarField& x,
+    const scalarField& xNbr
+) const
+{
+    // g(W) = R_w of cell c with W, the other unknowns fixed: increasing in
+    // W (storage and evaporation); bracketed from the iterate (down to a
+    // nearly empty cell, up by doubling), then Illinois regula falsi
+    // (Dahlquist and Bjorck, 2008, Numerical Methods in Scientific
+    // Computing I, ch. 6)
+    scalar Rc[3];
+    auto g = [&](const scalar W)
+    {
+        x[3*c + 2] = W;
+        res.cellResidual(c, x, xNbr, Rc);
+        return Rc[0];
+    };
+    const scalar W0 = x[3*c + 2];
+    const scalar g0 = g(W0);
+    if (mag(g0) < tol)
+    {
+        return false;
+    }
+    scalar a = W0, b = W0, ga = g0, gb = g0;
+    if (g0 > 0)
+    {
+        a = 1e-6*W0;
+        ga = g(a);
+    }
+    else
+    {
+        for (label k = 0; k < 30 && gb <= 0; ++k)
+        {
+            b *= 2;
+            gb = g(b);
+        }
+    }
+    if (!(ga < 0 && gb > 0))
+    {
+        x[3*c + 2] = W0;
+        return false;
+    }
+    label side = 0;
+    scalar W = W0;
+    for (label k = 0; k < 100; ++k)
+    {
+        W = (a*gb - b*ga)/(gb - ga);
+        const scalar gW = g(W);
+        if (mag(gW) < tol || b - a < 1e-12*b)
+        {
+            break;
+        }
+        if (gW > 0)
+        {
+            b = W;
+            gb = gW;
+            if (side == 1)
+            {
+                ga /= 2;
+            }
+            side = 1;
+        }
+        else
+        {
+            a = W;
+            ga = gW;
+            if (side == -1)
+            {
+                gb /= 2;
+            }
+            side = -1;
+        }
+    }
+    x[3*c + 2] = W;
+    return true;
+}
+
+
 bool Foam::pendularNewton::valid
 (
     const pendularResidual& res,
@@ -102,6 +184,9 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     const scalarField& phi = medium.porosity().primitiveField();
 
     scalarField R(x.size());
+    // The last two updates (in units of the tolerances)
+    FixedList<scalar, 3> uPrev(GREAT);
+    label nModifiedPrev = 1;
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
@@ -144,10 +229,22 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         const scalar rMax = max(r[0], max(r[1], r[2]));
         const scalar uMax =
             max(out.update[0], max(out.update[1], out.update[2]));
+        // The error of the iterate estimated from the contraction of the
+        // last two updates (quadratic phase: |dx_{k+1}| ~ |dx_k|^2/|dx_{k-1}|,
+        // Deuflhard, 2004, ch. 2)
+        scalar eMax = 0;
+        for (label k = 0; k < 3; ++k)
+        {
+            eMax = max(eMax, sqr(out.update[k])/max(uPrev[k], VSMALL));
+        }
         if
         (
             iter > 0 && nChopped == 0 && nProjected == 0
-         && ((rMax < 1 && uMax < 1) || (rMax < floorFactor_ && uMax < 1e-2))
+         && (
+                (rMax < 1 && uMax < 1)
+             || (rMax < floorFactor_ && uMax < 1e-2)
+             || (iter > 1 && nModifiedPrev == 0 && rMax < 1 && eMax < 1)
+            )
         )
         {
             out.converged = true;
@@ -173,6 +270,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         }
 
         FixedList<scalar, 3> u(scalar(0));
+        nModifiedPrev = nChopped + nProjected;
         nChopped = 0;
         nProjected = 0;
         for (label c = 0; c < nCells; ++c)
@@ -207,7 +305,28 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         }
         reduce(nChopped, sumOp<label>());
         reduce(nProjected, sumOp<label>());
+        uPrev = out.update;
         out.update = u;
+
+        // The water of the cells at the kink or near it (the drying
+        // front) from their own water balances
+        {
+            const tmp<scalarField> txNbr = res.neighbourStates(x);
+            label nLocal = 0;
+            for (label c = 0; c < nCells; ++c)
+            {
+                const scalar Wk = kinkWater(medium, phi[c], x[3*c]);
+                if (Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk)
+                {
+                    if (solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr()))
+                    {
+                        ++nLocal;
+                    }
+                }
+            }
+            reduce(nLocal, sumOp<label>());
+            nProjected += nLocal;
+        }
 
         if (!(out.valid = valid(res, x, pRef)))
         {
