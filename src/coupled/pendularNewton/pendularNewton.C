@@ -133,6 +133,34 @@ bool Foam::pendularNewton::solveCellWater
 }
 
 
+Foam::label Foam::pendularNewton::localWaterSolves
+(
+    const pendularResidual& res,
+    scalarField& x,
+    const scalarField& sW
+) const
+{
+    const pendularMedium& medium = res.medium();
+    const scalarField& phi = medium.porosity().primitiveField();
+    const tmp<scalarField> txNbr = res.neighbourStates(x);
+    label nLocal = 0;
+    for (label c = 0; c < x.size()/3; ++c)
+    {
+        const scalar Wk = kinkWater(medium, phi[c], x[3*c]);
+        if
+        (
+            Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
+         && solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr())
+        )
+        {
+            ++nLocal;
+        }
+    }
+    reduce(nLocal, sumOp<label>());
+    return nLocal;
+}
+
+
 bool Foam::pendularNewton::valid
 (
     const pendularResidual& res,
@@ -310,23 +338,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances
-        {
-            const tmp<scalarField> txNbr = res.neighbourStates(x);
-            label nLocal = 0;
-            for (label c = 0; c < nCells; ++c)
-            {
-                const scalar Wk = kinkWater(medium, phi[c], x[3*c]);
-                if (Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk)
-                {
-                    if (solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr()))
-                    {
-                        ++nLocal;
-                    }
-                }
-            }
-            reduce(nLocal, sumOp<label>());
-            nProjected += nLocal;
-        }
+        nProjected += localWaterSolves(res, x, sW);
 
         if (!(out.valid = valid(res, x, pRef)))
         {

@@ -133,13 +133,32 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
             return e.s;
         }
     }
+    // A state at the same T and W (e.g. the Jacobian's step of p_g) has
+    // the same liquid fraction and vapour: only the gas closure is new
+    const cellState* same = nullptr;
+    for (const cacheEntry& e : entries)
+    {
+        if (e.x[0] == x[0] && e.x[2] == x[2])
+        {
+            same = &e.s;
+            break;
+        }
+    }
     label& next = cacheNext_[celli];
     cacheEntry& e = entries[next];
     next = (next + 1) % nCache;
+    const cellState s =
+        same
+      ? pendularState::closure
+        (
+            medium_, medium_.porosity()[celli], x[0], x[1] + pRef_, x[2],
+            same->alpha, same->rhoW
+        )
+      : state(medium_.porosity()[celli], alphaGuess_[celli], x);
     e.x[0] = x[0];
     e.x[1] = x[1];
     e.x[2] = x[2];
-    e.s = state(medium_.porosity()[celli], alphaGuess_[celli], x);
+    e.s = s;
     return e.s;
 }
 
