@@ -253,6 +253,14 @@ int main(int argc, char *argv[])
     (
         params.fire ? params.fire->regularisation(params.size()) : nullptr
     );
+    if (reg && !obs.sigmaGiven)
+    {
+        FatalIOErrorInFunction(*fireDict)
+            << "fire regularisation: the weight is absolute (chi^2 against"
+            << " the number of data): give the data's noise,"
+            << " observations/sigma (or sigmas, or a sigma per group)"
+            << exit(FatalIOError);
+    }
 
     // A given sigma is the noise: intervals from it, s^2 tested against its
     // chi-square band; none: intervals scaled by s^2
