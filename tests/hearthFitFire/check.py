@@ -11,6 +11,10 @@
   against the truth, the oscillation of its error (second differences
   |L2 (T - T_true)|) and its variance (trace of the covariance) each
   >= 2.5 x the regularised estimate's (measured x3.2, x3.0, x3.4);
+- L-curve: its weight inside the searched range (not at an end) and its
+  RMS error below half the unregularised one (the truth within its band
+  at 19 of 25 knots: the corner smooths more than the discrepancy
+  principle here, chi^2 151 for N = 120; not checked);
 - law: the fire duration (truth 1 h) and plateau temperature (700 C)
   within their 95 % intervals;
 - bad input: each case of run step 4 refused with its message, no
@@ -108,6 +112,24 @@ c.true('unregularised oscillation >= 2.5 x regularised', on >= 2.5*orr,
        '%.2f vs %.2f' % (on, orr))
 c.true('unregularised variance (trace) >= 2.5 x regularised', vn >= 2.5*vr,
        '%.1f vs %.1f' % (vn, vr))
+
+# 2b. L-curve
+llog = open(os.path.join(scratch, 'lcurve/log.hearthFit')).read()
+m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N', llog)
+c.true('L-curve weight printed', m is not None, m.group(0) if m else '')
+if m:
+    wl = float(m.group(1))
+    # the searched range is [1e-12, 1e12] in 240 log steps of 10^0.1: an
+    # end means the corner was not found (measured: 0.0158, chi^2 151)
+    c.true('L-curve weight inside (1.3e-12, 8e11)', 1.3e-12 < wl < 8e11,
+           '%.4g' % wl)
+lc = params('lcurve')
+el = rms_error(lc)
+print('    L-curve: RMS error %.3f C, truth in band at %d of 25 knots'
+      % (el, sum(float(r['lower']) <= t <= float(r['upper'])
+                 for r, t in zip(lc, T))))
+c.true('L-curve RMS error < half the unregularised', el < 0.5*en,
+       '%.3f vs %.3f' % (el, en))
 
 # 3. Law: duration and plateau
 law = {r['name']: r for r in params('law')}

@@ -178,6 +178,18 @@ tikhonov::Choice tikhonov::choose
             x[i] = 0.5*std::log(std::max(chi2(p), 1e-300));
             y[i] = std::log(std::max((L_*p).norm(), 1e-300));
         }
+        // Where the curve hardly moves with w (its flat ends: w far below
+        // or above the range where it matters) the curvature is round-off
+        // over round-off: only points moving at >= 1 % of the fastest
+        double vMax = 0;
+        for (int i = 1; i < nw - 1; ++i)
+        {
+            vMax = std::max
+            (
+                vMax,
+                std::hypot(x[i + 1] - x[i - 1], y[i + 1] - y[i - 1])/(2*dt)
+            );
+        }
         double best = -1e300;
         int ib = nw/2;
         for (int i = 1; i < nw - 1; ++i)
@@ -186,6 +198,7 @@ tikhonov::Choice tikhonov::choose
             const double y1 = (y[i + 1] - y[i - 1])/(2*dt);
             const double x2 = (x[i + 1] - 2*x[i] + x[i - 1])/(dt*dt);
             const double y2 = (y[i + 1] - 2*y[i] + y[i - 1])/(dt*dt);
+            if (std::hypot(x1, y1) < 0.01*vMax) continue;
             const double d = std::pow(x1*x1 + y1*y1, 1.5);
             if (d <= 0) continue;
             const double kappa = (x1*y2 - y1*x2)/d;
