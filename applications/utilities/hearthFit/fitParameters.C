@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fitParameters.H"
+#include "fitFire.H"
 #include "thermocouples.H"
 #include "checkedRead.H"
 #include "scratchCase.H"
@@ -17,10 +18,14 @@
 
 Foam::fitParameters::fitParameters
 (
-    const dictionary& parsDict,
-    const fileName& casePath
+    const dictionary* parsDictPtr,
+    const fileName& casePath,
+    const dictionary* fireDict,
+    const word& startName
 )
 {
+    const dictionary& parsDict =
+        parsDictPtr ? *parsDictPtr : dictionary::null;
     for (const entry& e : parsDict)
     {
         if (!e.isDict())
@@ -166,6 +171,10 @@ Foam::fitParameters::fitParameters
         specs.push_back(s);
         pars.push_back(p);
     }
+    if (fireDict)
+    {
+        fire.reset(new fitFire(*fireDict, casePath, startName, *this));
+    }
     if (specs.empty())
     {
         FatalIOErrorInFunction(parsDict) << "no parameters"
@@ -246,12 +255,16 @@ bool Foam::fitParameters::inDirectory(const word& dirName) const
 {
     for (const ParameterSpec& s : specs)
     {
-        if (s.component < 0 && s.file.components()[0] == dirName)
+        if
+        (
+            s.component < 0 && s.fireIndex < 0
+         && s.file.components()[0] == dirName
+        )
         {
             return true;
         }
     }
-    return false;
+    return fire && fire->file().components()[0] == dirName;
 }
 
 
@@ -379,10 +392,18 @@ void Foam::fitParameters::write
             }
             continue;
         }
+        if (specs[j].fireIndex >= 0)
+        {
+            continue;
+        }
         word key;
         dictionary* d =
             scratchCase::parentDict(dicts[specs[j].file], specs[j].entry, key);
         d->set(key, specs[j].scale*p(j));
+    }
+    if (fire)
+    {
+        fire->write(dir, p);
     }
     forAllConstIters(dicts, iter)
     {

@@ -60,6 +60,11 @@ Description
     propagation of the covariance (hearthFit::fitPosterior,
     fitPredictions).
 
+    The fire itself may be unknown (sub-dictionary fire, fitFire): its
+    surface temperature on knots, Tikhonov-regularised (weight by the
+    discrepancy principle or the L-curve, printed: hearthFit::tikhonov),
+    or the duration and plateau temperature of the fire law.
+
     Nothing is written outside <workDir> but the -writeCase copy: an
     existing -writeCase directory is refused without -overwrite, the case
     itself and directories inside its system, constant or start time (they
@@ -91,6 +96,8 @@ Usage
 #include "fitState.H"
 #include "fitReport.H"
 #include "firstEstimate.H"
+#include "fitFire.H"
+#include "tikhonov.H"
 
 #include <csignal>
 #include <memory>
@@ -188,14 +195,23 @@ int main(int argc, char *argv[])
         wordList
         ({
             "parameters", "observations", "forwardModel", "method",
-            "firstEstimate", "priors", "predictions"
+            "firstEstimate", "priors", "predictions", "fire"
         })
     );
 
     // ---- The set-up, every input checked before any run
     hearthFit::FitOptions opts(readFitMethod(fitDict));
-    const dictionary& parsDict = fitDict.subDict("parameters");
-    fitParameters params(parsDict, casePath);
+    const dictionary* fireDict = fitDict.findDict("fire");
+    if (fitDict.found("fire") && !fireDict)
+    {
+        FatalIOErrorInFunction(fitDict) << "fire: a sub-dictionary"
+            << exit(FatalIOError);
+    }
+    const dictionary& parsDict =
+        fireDict
+      ? fitDict.subOrEmptyDict("parameters")
+      : fitDict.subDict("parameters");
+    fitParameters params(&parsDict, casePath, fireDict, startName);
     fitObservations obs(fitDict.subDict("observations"), runTime, params.size());
     params.readPriors(fitDict, obs.sigmaGiven);
     const dictionary& fwdDict = fitDict.subDict("forwardModel");
@@ -233,6 +249,18 @@ int main(int argc, char *argv[])
     fitPredictions preds(predDict, params);
     obs.predictions = &preds;
     hearthFit::fitPosterior post(params.priors, obs.size(), preds.size());
+    std::unique_ptr<hearthFit::tikhonov> reg
+    (
+        params.fire ? params.fire->regularisation(params.size()) : nullptr
+    );
+    if (reg && !obs.sigmaGiven)
+    {
+        FatalIOErrorInFunction(*fireDict)
+            << "fire regularisation: the weight is absolute (chi^2 against"
+            << " the number of data): give the data's noise,"
+            << " observations/sigma (or sigmas, or a sigma per group)"
+            << exit(FatalIOError);
+    }
 
     // A given sigma is the noise: intervals from it, s^2 tested against its
     // chi-square band; none: intervals scaled by s^2
@@ -269,6 +297,7 @@ int main(int argc, char *argv[])
         {
             fwd.evaluate(batch, params, obs);
             post.absorb(batch);
+            if (reg) reg->absorb(batch);
         }
     );
     lm->setProgress
@@ -299,6 +328,17 @@ int main(int argc, char *argv[])
     hearthFit::FitResult res;
     try
     {
+        if (reg)
+        {
+            // The fire's regularisation weight on the linearisation at the
+            // initial (or resumed) values, its runs reused by the fit
+            hearthFit::Vector p0(params.size());
+            for (label j = 0; j < params.size(); ++j)
+            {
+                p0(j) = params.pars[j].initial;
+            }
+            params.fire->chooseWeight(*reg, p0, fwd, params, obs);
+        }
         res = lm->solve();
     }
     catch (const fitInterrupted&)

@@ -1,0 +1,395 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+\*---------------------------------------------------------------------------*/
+
+#include "fitFire.H"
+#include "fitParameters.H"
+#include "fitForwardRuns.H"
+#include "fitObservations.H"
+#include "fireHistory.H"
+#include "checkedRead.H"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- A fire parameter { initial; min; max; } (C or h)
+hearthFit::FitParameter readBounded
+(
+    const dictionary& d,
+    const word& name,
+    const scalar lowest
+)
+{
+    checkedRead::checkKeywords
+    (
+        d, wordList({"initial", "min", "max"}), "fire " + name
+    );
+    const validRange range{lowest, GREAT, false, true};
+    hearthFit::FitParameter p;
+    p.name = name;
+    p.initial = checkedRead::get(d, "initial", dimless, range).value();
+    p.lower = checkedRead::get(d, "min", dimless, range).value();
+    p.upper = checkedRead::get(d, "max", dimless, range).value();
+    if (!(p.lower < p.upper) || p.initial < p.lower || p.initial > p.upper)
+    {
+        FatalIOErrorInFunction(d)
+            << "fire " << name << ": need min < max and initial within"
+            << " [min, max] (min " << p.lower << ", max " << p.upper
+            << ", initial " << p.initial << ")" << exit(FatalIOError);
+    }
+    return p;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fitFire::fitFire
+(
+    const dictionary& dict,
+    const fileName& casePath,
+    const word& startName,
+    fitParameters& params
+)
+:
+    type_(Type::knots),
+    first_(params.size()),
+    order_(0),
+    rule_(hearthFit::tikhonov::Rule::fixed),
+    weight_(0)
+{
+    const word type(dict.get<word>("type"));
+    if (type == "knots")
+    {
+        checkedRead::checkKeywords
+        (
+            dict,
+            wordList
+            ({"type", "file", "knots", "initial", "min", "max",
+              "regularisation"}),
+            "fire (type knots)"
+        );
+    }
+    else if (type == "law")
+    {
+        type_ = Type::law;
+        checkedRead::checkKeywords
+        (
+            dict,
+            wordList
+            ({"type", "file", "fire", "cooling", "duration", "temperature"}),
+            "fire (type law)"
+        );
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: type " << type << ": valid choices: knots (the"
+            << " surface temperature on knots), law (duration and plateau"
+            << " temperature of the fire law)" << exit(FatalIOError);
+    }
+
+    // The fire CSV: in a directory copied for each run
+    file_ = dict.get<fileName>("file");
+    file_.clean();
+    const wordList parts(file_.components());
+    if
+    (
+        file_.isAbsolute() || file_.find("..") != string::npos
+     || parts.size() < 2
+     || (parts[0] != "system" && parts[0] != "constant" && parts[0] != startName)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: file '" << file_ << "' must lie in the case's system,"
+            << " constant or " << startName << " directory (relative to the"
+            << " case), the directories copied for each run"
+            << exit(FatalIOError);
+    }
+    if (!isDir(casePath/file_.path()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: file " << file_ << ": no directory "
+            << casePath/file_.path() << exit(FatalIOError);
+    }
+
+    if (type_ == Type::law)
+    {
+        lawFire_ = dict.subDict("fire");
+        lawCooling_ = dict.subDict("cooling");
+        if (lawFire_.found("temperature"))
+        {
+            FatalIOErrorInFunction(lawFire_)
+                << "fire/fire: temperature is the parameter fireTemperature"
+                << " (fire/temperature { initial; min; max; }): remove it"
+                << exit(FatalIOError);
+        }
+        hearthFit::FitParameter d =
+            readBounded(dict.subDict("duration"), "fireDuration", 0);
+        hearthFit::FitParameter T =
+            readBounded(dict.subDict("temperature"), "fireTemperature", -273.15);
+        // The law checked (keywords, ranges) with the initial values, and
+        // the duration bounds against its ramp
+        dictionary fd(lawFire_);
+        fd.set("temperature", T.initial);
+        fireHistory law(fd, lawCooling_, wordList());
+        if (d.lower*fireHistory::hour < law.rampTime())
+        {
+            FatalIOErrorInFunction(dict.subDict("duration"))
+                << "fire duration: min " << d.lower << " h is shorter than"
+                << " the ramp (rampTime " << law.rampTime()/fireHistory::hour
+                << " h)" << exit(FatalIOError);
+        }
+        for (hearthFit::FitParameter& p : {std::ref(d), std::ref(T)})
+        {
+            ParameterSpec s;
+            s.name = p.name;
+            s.fireIndex = params.size() - first_;
+            params.specs.push_back(s);
+            params.pars.push_back(p);
+            params.initialFactor.push_back(0);
+        }
+        return;
+    }
+
+    // Knots [s], strictly increasing, at least 2
+    knots_ = dict.get<scalarList>("knots");
+    if (knots_.size() < 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: knots: need at least 2 times [s], strictly increasing"
+            << exit(FatalIOError);
+    }
+    forAll(knots_, k)
+    {
+        if (!std::isfinite(knots_[k]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "fire: knots: time " << k + 1 << " is not finite"
+                << exit(FatalIOError);
+        }
+        if (k > 0 && !(knots_[k] > knots_[k - 1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "fire: knots must be strictly increasing: knot " << k + 1
+                << " (" << knots_[k] << " s) is not after knot " << k
+                << " (" << knots_[k - 1] << " s)" << exit(FatalIOError);
+        }
+    }
+    const validRange celsius{-273.15, GREAT, false, true};
+    const scalar T0 = checkedRead::get(dict, "initial", dimless, celsius).value();
+    const scalar Tmin = checkedRead::get(dict, "min", dimless, celsius).value();
+    const scalar Tmax = checkedRead::get(dict, "max", dimless, celsius).value();
+    if (!(Tmin < Tmax) || T0 < Tmin || T0 > Tmax)
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: need min < max and initial within [min, max] (min "
+            << Tmin << ", max " << Tmax << ", initial " << T0 << ") [C]"
+            << exit(FatalIOError);
+    }
+    forAll(knots_, k)
+    {
+        hearthFit::FitParameter p;
+        p.name = "Tfire_" + std::to_string(k + 1);
+        p.initial = T0;
+        p.lower = Tmin;
+        p.upper = Tmax;
+        p.typical = 100;        // K: the finite-difference step's scale
+        ParameterSpec s;
+        s.name = p.name;
+        s.fireIndex = k;
+        params.specs.push_back(s);
+        params.pars.push_back(p);
+        params.initialFactor.push_back(0);
+    }
+
+    const dictionary* reg = dict.findDict("regularisation");
+    if (dict.found("regularisation") && !reg)
+    {
+        FatalIOErrorInFunction(dict)
+            << "fire: regularisation must be a sub-dictionary { order 1|2;"
+            << " rule discrepancy|lCurve|fixed|none; weight w; }"
+            << exit(FatalIOError);
+    }
+    if (!reg) return;
+    checkedRead::checkKeywords
+    (
+        *reg, wordList({"order", "rule", "weight"}), "fire regularisation"
+    );
+    const word rule(reg->get<word>("rule"));
+    if (rule == "none") return;
+    if (rule == "discrepancy") rule_ = hearthFit::tikhonov::Rule::discrepancy;
+    else if (rule == "lCurve") rule_ = hearthFit::tikhonov::Rule::lCurve;
+    else if (rule == "fixed") rule_ = hearthFit::tikhonov::Rule::fixed;
+    else
+    {
+        FatalIOErrorInFunction(*reg)
+            << "fire regularisation: rule " << rule << ": valid choices:"
+            << " discrepancy (chi^2 = number of data), lCurve (its corner),"
+            << " fixed (weight), none" << exit(FatalIOError);
+    }
+    order_ = reg->get<label>("order");
+    if (order_ != 1 && order_ != 2)
+    {
+        FatalIOErrorInFunction(*reg)
+            << "fire regularisation: order " << order_ << ": valid are 1"
+            << " (first differences), 2 (second differences)"
+            << exit(FatalIOError);
+    }
+    if (knots_.size() < order_ + 1)
+    {
+        FatalIOErrorInFunction(*reg)
+            << "fire regularisation: order " << order_ << " needs at least "
+            << order_ + 1 << " knots" << exit(FatalIOError);
+    }
+    if (rule_ == hearthFit::tikhonov::Rule::fixed)
+    {
+        weight_ =
+            checkedRead::get(*reg, "weight", dimless, checkedRead::nonNegative())
+           .value();
+    }
+    else if (reg->found("weight"))
+    {
+        FatalIOErrorInFunction(*reg)
+            << "fire regularisation: weight is for rule fixed only (rule "
+            << rule << " chooses it)" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fitFire::history
+(
+    const hearthFit::Vector& p,
+    scalarList& t,
+    scalarList& T
+) const
+{
+    if (type_ == Type::knots)
+    {
+        t = knots_;
+        T.setSize(knots_.size());
+        forAll(T, k) T[k] = p(first_ + k);
+        return;
+    }
+    dictionary fd(lawFire_);
+    fd.set("temperature", p(first_ + 1));
+    const fireHistory law(fd, lawCooling_, wordList());
+    const temperatureHistory h(law.table(p(first_)*fireHistory::hour));
+    t = h.times();
+    T = h.temperatures() - 273.15;
+}
+
+
+void Foam::fitFire::write
+(
+    const fileName& dir,
+    const hearthFit::Vector& p
+) const
+{
+    scalarList t, T;
+    history(p, t, T);
+    std::ofstream out(dir/file_);
+    out << std::setprecision(17)
+        << "# fire history written by hearthFit (fire, type "
+        << (type_ == Type::knots ? "knots" : "law") << ")\n"
+        << "time_s,T_C\n";
+    forAll(t, k)
+    {
+        out << t[k] << ',' << T[k] << '\n';
+    }
+}
+
+
+std::unique_ptr<hearthFit::tikhonov> Foam::fitFire::regularisation
+(
+    const label nPar
+) const
+{
+    if (type_ != Type::knots || order_ == 0)
+    {
+        return nullptr;
+    }
+    return std::unique_ptr<hearthFit::tikhonov>
+    (
+        new hearthFit::tikhonov(nPar, first_, knots_.size(), order_, weight_)
+    );
+}
+
+
+void Foam::fitFire::chooseWeight
+(
+    hearthFit::tikhonov& reg,
+    const hearthFit::Vector& p0,
+    fitForwardRuns& fwd,
+    const fitParameters& params,
+    const fitObservations& obs
+) const
+{
+    static const char* names[] = {"fixed", "discrepancy", "lCurve"};
+    const char* ruleName = names[int(rule_)];
+    Info<< "Fire regularisation: " << (order_ == 1 ? "first" : "second")
+        << " differences of the " << knots_.size() << " knot temperatures,"
+        << " rule " << ruleName << endl;
+    if (rule_ == hearthFit::tikhonov::Rule::fixed)
+    {
+        Info<< "    weight w = " << reg.weight() << " 1/K^2 (given)" << endl;
+        return;
+    }
+
+    // The linearisation at p0: one forward difference per parameter
+    const label n = p0.size(), m = obs.size();
+    std::vector<hearthFit::Evaluation> batch(n + 1);
+    std::vector<double> h(n);
+    batch[0].parameters = p0;
+    for (label j = 0; j < n; ++j)
+    {
+        const hearthFit::FitParameter& q = params.pars[j];
+        h[j] = 1e-3*std::max(std::abs(p0(j)), std::max(q.typical, 1.0));
+        if (p0(j) + h[j] > q.upper) h[j] = -h[j];
+        batch[j + 1].parameters = p0;
+        batch[j + 1].parameters(j) += h[j];
+    }
+    fwd.evaluate(batch, params, obs);
+    for (const hearthFit::Evaluation& e : batch)
+    {
+        if (!e.ok)
+        {
+            FatalErrorInFunction
+                << "fire regularisation: a forward run of the"
+                << " linearisation at the initial values failed: cannot"
+                << " choose the weight (rule " << ruleName << ")"
+                << exit(FatalError);
+        }
+    }
+    const hearthFit::Vector r0 = batch[0].residuals.head(m);
+    hearthFit::Matrix J(m, n);
+    for (label j = 0; j < n; ++j)
+    {
+        J.col(j) = (batch[j + 1].residuals.head(m) - r0)/h[j];
+    }
+    const hearthFit::tikhonov::Choice c = reg.choose(rule_, J, r0, p0);
+    Info<< "    weight w = " << c.weight << " 1/K^2: chi^2 = " << c.chi2
+        << " (N = " << m << " data; unregularised " << c.chi2Unregularised
+        << "), roughness |L T| = " << c.roughness << " K"
+        << " (linearisation at the initial values, " << n + 1 << " runs)"
+        << endl;
+    if (c.message.size())
+    {
+        WarningInFunction << "fire regularisation: " << c.message.c_str()
+            << endl;
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,147 @@
+"""hearthFit with the fire as unknown (see run). Checks:
+- knots, regularised (second differences, discrepancy principle): the
+  weight printed with chi^2 = N (the number of data) on the linearisation
+  (the model is linear: bisection to 1e-6 in log w, so chi^2 within 1e-3
+  relative); the imposed history (the fire law's ramp, plateau and
+  exponential cooling, computed here at the knots) within the reported
+  95 % band at >= 90 % of the 25 knots (the band is the posterior of the
+  smoothness prior: its bias at the two corners of the law, end of ramp
+  and extinction, may put those knots outside);
+- knots, not regularised (rule none): visibly unstable: its RMS error
+  against the truth, the oscillation of its error (second differences
+  |L2 (T - T_true)|) and its variance (trace of the covariance) each
+  >= 2.5 x the regularised estimate's (measured x3.2, x3.0, x3.4);
+- L-curve: its weight inside the searched range (not at an end) and its
+  RMS error below half the unregularised one (the truth within its band
+  at 19 of 25 knots: the corner smooths more than the discrepancy
+  principle here, chi^2 151 for N = 120; not checked);
+- law: the fire duration (truth 1 h) and plateau temperature (700 C)
+  within their 95 % intervals;
+- bad input: each case of run step 4 refused with its message, no
+  scratch copy."""
+import csv
+import math
+import os
+import re
+import hearthcheck as hc
+
+scratch = os.environ.get('scratch', '.')
+c = hc.Check('hearthFitFire')
+
+
+def truth(t):
+    """The fire law of truthT: ramp 20 -> 700 C over 0.5 h, 700 C until
+    1 h, then 20 + 680 exp(-(t - 1 h)/1 h) [C], t in s."""
+    if t <= 1800:
+        return 20 + 680*t/1800
+    if t <= 3600:
+        return 700.0
+    return 20 + 680*math.exp(-(t - 3600)/3600)
+
+
+def params(case):
+    with open(os.path.join(scratch, case, 'postProcessing/hearthFit/parameters.csv')) as f:
+        return list(csv.DictReader(f))
+
+
+def second_roughness(v):
+    return math.sqrt(sum((v[i+1] - 2*v[i] + v[i-1])**2 for i in range(1, len(v) - 1)))
+
+
+knots = [300.0*k for k in range(25)]
+T = [truth(t) for t in knots]
+
+# 1. Regularised
+log = open(os.path.join(scratch, 'knots/log.hearthFit')).read()
+m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N = (\d+) data; '
+              r'unregularised (\S+)\)', log)
+c.true('regularisation weight printed (discrepancy)', m is not None,
+       m.group(0) if m else '')
+if m:
+    w, chi2, N = float(m.group(1)), float(m.group(2)), int(m.group(3))
+    c.le('|chi^2/N - 1| at the chosen weight', abs(chi2/N - 1), 1e-3)
+    c.true('N = 2 sensors x 60 readings', N == 120, str(N))
+reg = params('knots')
+c.true('25 knot parameters', len(reg) == 25, str(len(reg)))
+inside = [float(r['lower']) <= t <= float(r['upper']) for r, t in zip(reg, T)]
+for r, t, ok in zip(reg, T, inside):
+    print('    %-9s truth %8.2f estimate %8.2f +- %5.2f %s'
+          % (r['name'], t, float(r['estimate']), float(r['std_error']),
+             '' if ok else 'OUTSIDE'))
+c.true('truth within the 95 % band at >= 90 % of the knots',
+       sum(inside) >= 0.9*len(T), '%d of %d' % (sum(inside), len(T)))
+
+# 2. Not regularised
+none = params('none')
+nlog = open(os.path.join(scratch, 'none/log.hearthFit')).read()
+c.true('no regularisation weight chosen (rule none)',
+       'weight w =' not in nlog)
+
+
+def rms_error(rows):
+    return math.sqrt(sum((float(r['estimate']) - t)**2 for r, t in zip(rows, T))/len(T))
+
+
+def oscillation(rows):
+    """|L2 (T_estimate - T_truth)|: the second differences of the error,
+    its knot-to-knot oscillation [C]"""
+    return second_roughness([float(r['estimate']) - t for r, t in zip(rows, T)])
+
+
+def variance(rows):
+    """The trace of the covariance, sum of the knots' variances [C^2]"""
+    return sum(float(r['std_error'])**2 for r in rows)
+
+
+er, en = rms_error(reg), rms_error(none)
+orr, on = oscillation(reg), oscillation(none)
+vr, vn = variance(reg), variance(none)
+print('    RMS error [C]: regularised %.3f, not regularised %.3f' % (er, en))
+print('    oscillation |L2 (T - T_true)| [C]: regularised %.2f, not %.2f'
+      % (orr, on))
+print('    trace of the covariance [C^2]: regularised %.1f, not %.1f'
+      % (vr, vn))
+# Measured 2026-12-02: RMS error 5.39 vs 17.04 (x3.2), oscillation 69.3
+# vs 211.1 (x3.0), variance 2.73e3 vs 9.24e3 (x3.4); required x2.5 each
+# (with readings every 5 min instead of 2, N = 48: RMS error x15, but the
+# band then holds the truth at only 19 of 25 knots: the discrepancy
+# principle over-smooths the two corners of the law)
+c.true('unregularised RMS error >= 2.5 x regularised', en >= 2.5*er,
+       '%.3f vs %.3f' % (en, er))
+c.true('unregularised oscillation >= 2.5 x regularised', on >= 2.5*orr,
+       '%.2f vs %.2f' % (on, orr))
+c.true('unregularised variance (trace) >= 2.5 x regularised', vn >= 2.5*vr,
+       '%.1f vs %.1f' % (vn, vr))
+
+# 2b. L-curve
+llog = open(os.path.join(scratch, 'lcurve/log.hearthFit')).read()
+m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N', llog)
+c.true('L-curve weight printed', m is not None, m.group(0) if m else '')
+if m:
+    wl = float(m.group(1))
+    # the searched range is [1e-12, 1e12] in 240 log steps of 10^0.1: an
+    # end means the corner was not found (measured: 0.0158, chi^2 151)
+    c.true('L-curve weight inside (1.3e-12, 8e11)', 1.3e-12 < wl < 8e11,
+           '%.4g' % wl)
+lc = params('lcurve')
+el = rms_error(lc)
+print('    L-curve: RMS error %.3f C, truth in band at %d of 25 knots'
+      % (el, sum(float(r['lower']) <= t <= float(r['upper'])
+                 for r, t in zip(lc, T))))
+c.true('L-curve RMS error < half the unregularised', el < 0.5*en,
+       '%.3f vs %.3f' % (el, en))
+
+# 3. Law: duration and plateau
+law = {r['name']: r for r in params('law')}
+for name, t in (('fireDuration', 1.0), ('fireTemperature', 700.0)):
+    r = law.get(name)
+    c.true('%s estimated' % name, r is not None)
+    if r:
+        lo, hi = float(r['lower']), float(r['upper'])
+        c.true('%s truth %g within [%.5g, %.5g] (estimate %.6g)'
+               % (name, t, lo, hi, float(r['estimate'])), lo <= t <= hi)
+
+# 4. Bad input
+c.true('every bad input refused',
+       not os.path.exists(os.path.join(scratch, 'badFailed')))
+c.done()
