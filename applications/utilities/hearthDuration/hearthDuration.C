@@ -83,6 +83,9 @@ Usage
 #include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
+#include "alterationDepth.H"
+#include "levenbergMarquardt.H"
+#include "Tuple2.H"
 #include "OFstream.H"
 #include "IOmanip.H"
 #include <chrono>
@@ -265,6 +268,11 @@ int main(int argc, char *argv[])
 
         return r.f;
     };
+
+    if (fitMode)
+    {
+        #include "fitDuration.H"
+    }
 
     if (singleDuration > 0)
     {
