@@ -83,6 +83,8 @@ c.true('exact: printed line as fit.csv',
        m.group(0) if m else 'not found')
 c.le('exact: interval symmetric, 1.96 se [h]',
      abs(hi - lo - 2*Q*se), 1e-6)
+c.true('exact: se/d %.3f in [0.10, 0.14] (the regime the README states: '
+       '12 %%)' % (se/d), 0.10 <= se/d <= 0.14)
 (d1, z1), (d2, z2) = last_depths('slope1.4'), last_depths('slope1.6')
 slope = (z2 - z1)/(d2 - d1)
 c.le('exact: |se/(sigma_w/(dz/dd)) - 1| (se %.4f h, dz/dd %.5f m/h)'
