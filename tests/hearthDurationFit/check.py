@@ -10,7 +10,8 @@
   z ~ sqrt(d) the O(h^2) slope error is ~ h^2/8 = 0.07 %, the remainder
   is the optimiser's tolerance);
 - coverage: z(d) of the forward model tabulated by single runs every
-  0.05 h (cubic Hermite between them, slopes by central differences);
+  0.1 h from 0.5 to 3.2 h (cubic Hermite between them, slopes by central
+  differences); at the sigmas (se/d = 12 %) and at twice them (24 %),
   4000 draws of the two depths z(d0) + sigma_i e_i, each inverted
   (d_hat = z^-1(zbar)) with the tool's first-order interval
   d_hat -/+ 1.96 sigma_w/z'(d_hat): the share of intervals holding d0
@@ -97,8 +98,8 @@ tab.sort()
 ds = [t[0] for t in tab]
 zs = [t[1] for t in tab]
 n = len(ds)
-c.true('table: 39 runs from 0.7 to 2.6 h', n == 39 and abs(ds[0] - 0.7) < 1e-9
-       and abs(ds[-1] - 2.6) < 1e-9)
+c.true('table: 28 runs from 0.5 to 3.2 h', n == 28 and abs(ds[0] - 0.5) < 1e-9
+       and abs(ds[-1] - 3.2) < 1e-9)
 c.true('table: z increases with d', all(a < b for a, b in zip(zs, zs[1:])))
 ms = [(zs[min(i + 1, n - 1)] - zs[max(i - 1, 0)])
       / (ds[min(i + 1, n - 1)] - ds[max(i - 1, 0)]) for i in range(n)]
@@ -133,27 +134,32 @@ def d_of(z):
 
 c.le('table: |z(1.5 h) - 0.041| [mm]', 1e3*abs(z_of(D0) - Z0), 0.01)
 
-rng = random.Random(12345)
-N = 4000
-cover = prof = 0
-for k in range(N):
-    zi = [Z0 + sg*rng.gauss(0, 1) for sg in SIG]
-    zbar = sum(z/sg**2 for z, sg in zip(zi, SIG))*SW**2
-    dh = d_of(zbar)
-    if dh is None:
-        continue
-    half = Q*SW/dz_of(dh)
-    cover += dh - half <= D0 <= dh + half
-    a, b = d_of(zbar - Q*SW), d_of(zbar + Q*SW)
-    prof += (a is None or a <= D0) and (b is None or D0 <= b)
-p, pp = cover/N, prof/N
-band = 3.29*math.sqrt(0.95*0.05/N)
-print('    coverage over %d draws: first order %.4f, profile likelihood %.4f'
-      % (N, p, pp))
-c.le('coverage of the first-order 95 %% interval %.4f: |p - 0.95|' % p,
-     abs(p - 0.95), band)
-c.le('coverage of the profile-likelihood interval %.4f: |p - 0.95|' % pp,
-     abs(pp - 0.95), band)
+band = 3.29*math.sqrt(0.95*0.05/4000)
+for k in (1, 2):
+    sig = tuple(k*sg for sg in SIG)
+    sw = k*SW
+    rng = random.Random(12345 + k)
+    N = 4000
+    cover = prof = 0
+    for _ in range(N):
+        zi = [Z0 + sg*rng.gauss(0, 1) for sg in sig]
+        zbar = sum(z/sg**2 for z, sg in zip(zi, sig))*sw**2
+        dh = d_of(zbar)
+        if dh is None:          # outside the table: counted as a miss
+            continue
+        half = Q*sw/dz_of(dh)
+        cover += dh - half <= D0 <= dh + half
+        a, b = d_of(zbar - Q*sw), d_of(zbar + Q*sw)
+        prof += (a is None or a <= D0) and (b is None or D0 <= b)
+    p, pp = cover/N, prof/N
+    print('    sigmas x%d (se/d %.2f): coverage over %d draws: first order '
+          '%.4f, profile likelihood %.4f' % (k, sw/dz_of(D0)/D0, N, p, pp))
+    c.true('sigmas x%d: se/d %.3f within 2 %% of %d x 12 %%'
+           % (k, sw/dz_of(D0)/D0, k), abs(sw/dz_of(D0)/D0 - 0.12*k) < 0.02)
+    c.le('sigmas x%d: coverage of the first-order 95 %% interval %.4f: '
+         '|p - 0.95|' % (k, p), abs(p - 0.95), band)
+    c.le('sigmas x%d: coverage of the profile-likelihood interval %.4f: '
+         '|p - 0.95|' % (k, pp), abs(pp - 0.95), band)
 
 # Noisy fits by the tool against the table's inversion
 for s_ in (1, 2, 3):

@@ -630,7 +630,9 @@ void levenbergMarquardt::computeStatistics
         // The correlation of the estimates is that of (J^T J)^-1 whatever
         // s^2 is: from covS when s^2 = 0 (a zero-residual fit: zero
         // covariance, zero-width intervals, and 0/0 here would trap)
-        const bool zeroS2 = !(res.sigma2 > 0) && !opts_.knownSigma;
+        // (knownSigma first: with m = n, s^2 is NaN, and comparing a NaN
+        // traps under OpenFOAM's FP exceptions)
+        const bool zeroS2 = !opts_.knownSigma && !(res.sigma2 > 0);
         const Matrix& C = zeroS2 ? covS : res.covariance;
         for (int i = 0; i < n_; ++i)
         {
