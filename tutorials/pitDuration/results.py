@@ -198,6 +198,27 @@ def summary():
     fig.add('minimalShorterByPercent', 100*(1 - d*3600/tc), '%')
     w('')
 
+    # hearthDuration's fit to the observed depth (wetFit/)
+    fit = {r['parameter']: r
+           for r in read_csv('wetFit/postProcessing/hearthDuration/fit.csv')}
+    fs = read_csv('wetFit/postProcessing/hearthDuration/fitSummary.csv')[0]
+    fd = fit['duration_h']
+    dF, seF = float(fd['estimate']), float(fd['standardError'])
+    loF, hiF = float(fd['lower']), float(fd['upper'])
+    w('hearthDuration fit (wetFit/): reddening (290 C) observed 4 cm +/- 3 mm '
+      'under the floor centre')
+    w('  the fire burned at least %.2f h (95 %%: %.2f-%.2f h), if no hotter '
+      'than 700 C; standard error %.2f h; %s runs, %s s wall time'
+      % (dF, loF, hiF, seF, fs['runs'],
+         read_file('wetFit/wallTime.hearthDuration', '?')))
+    fig.add('fitDuration', dF, 'h')
+    fig.add('fitLower', loF, 'h')
+    fig.add('fitUpper', hiF, 'h')
+    fig.add('fitStandardError', seF, 'h')
+    fig.add('fitRelativeStandardError', 100*seF/dF, '%')
+    fig.add('fitRuns', float(fs['runs']), '1')
+    w('')
+
     # hearthAlteration
     w('hearthAlteration at the end of the fire (6 h): depth reached by TMax >= '
       'threshold [cm]; volume of the quarter domain [m3]')

@@ -78,6 +78,7 @@ Usage
 #include <sstream>
 #include "unitConversion.H"
 #include "checkedRead.H"
+#include "alterationDepth.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -122,7 +123,6 @@ std::string formatted(const scalar x, const int digits, const bool fixed)
     return os.str();
 }
 
-#include "alterationDepth.H"
 #include "wedgeAngle.H"
 
 } // End namespace Foam

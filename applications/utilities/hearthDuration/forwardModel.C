@@ -232,9 +232,22 @@ Foam::scalarField Foam::forwardModel::run
     boolList& stillRising
 )
 {
-    const scalar endTime = startTime_ + duration + fire_.coolingTime();
+    return run(fire_, duration, runIndex, log, stillRising);
+}
 
-    fire_.write(scratch_/"constant"/"fireHistory", duration, startTime_);
+
+Foam::scalarField Foam::forwardModel::run
+(
+    const fireHistory& fire,
+    const scalar duration,
+    const label runIndex,
+    fileName& log,
+    boolList& stillRising
+)
+{
+    const scalar endTime = startTime_ + duration + fire.coolingTime();
+
+    fire.write(scratch_/"constant"/"fireHistory", duration, startTime_);
     writeControlDict(endTime);
     copy_->removeResults();
 

@@ -69,11 +69,24 @@ Description
     that is the case or lies inside its system, constant or start time
     (copied into workDir/scratchCase) is refused.
 
+    Fit mode (keyword alterations instead of points or line): observed
+    alteration depths z_i +/- sigma_i along lines at several places give
+    the duration d (and with fitTemperature the fire temperature Tf) by
+    weighted least squares through the same forward runs
+
+        minimise  sum_i ((zModel_i(d, Tf) - z_i)/sigma_i)^2
+
+    (zModel_i: alterationDepth of TMax along line i; the optimiser
+    hearthFit::levenbergMarquardt with the sigmas known), with first-order
+    intervals; Tf is reported not identifiable when the scaled
+    sensitivities' singular values differ by more than 1e-3 (fitDuration.H).
+    tests/hearthDurationFit measures their coverage.
+
 Usage
     hearthDuration [-duration h] [-case dir]
 
     -duration h: one forward run of that duration; prints TMax at the
-    points (no search).
+    points (no search), or in fit mode the modelled depths.
 
 \*---------------------------------------------------------------------------*/
 
@@ -83,6 +96,9 @@ Usage
 #include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
+#include "alterationDepth.H"
+#include "levenbergMarquardt.H"
+#include "Tuple2.H"
 #include "OFstream.H"
 #include "IOmanip.H"
 #include <chrono>
@@ -265,6 +281,11 @@ int main(int argc, char *argv[])
 
         return r.f;
     };
+
+    if (fitMode)
+    {
+        #include "fitDuration.H"
+    }
 
     if (singleDuration > 0)
     {

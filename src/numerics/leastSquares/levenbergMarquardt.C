@@ -566,13 +566,13 @@ void levenbergMarquardt::computeStatistics
     // (J^T J)^-1 and the quantile normal; s^2 should lie in its
     // chi-square band (chi^2_dof/dof). Unknown: s^2 (J^T J)^-1 and t
     res.knownSigma = opts_.knownSigma;
+    // (with a known sigma the covariance needs no residual degree of
+    // freedom: m = n is enough, e.g. one observation of one parameter)
     res.tQuantile =
-        res.dof > 0
-      ? (
-            opts_.knownSigma
-          ? gsl_cdf_ugaussian_Pinv(0.5*(1 + opts_.confidence))
-          : gsl_cdf_tdist_Pinv(0.5*(1 + opts_.confidence), res.dof)
-        )
+        opts_.knownSigma && res.dof >= 0
+      ? gsl_cdf_ugaussian_Pinv(0.5*(1 + opts_.confidence))
+      : res.dof > 0
+      ? gsl_cdf_tdist_Pinv(0.5*(1 + opts_.confidence), res.dof)
       : nan;
     res.sigma2Lower =
         res.dof > 0
@@ -612,7 +612,7 @@ void levenbergMarquardt::computeStatistics
     res.lowerConfidence = Vector::Constant(n_, nan);
     res.upperConfidence = Vector::Constant(n_, nan);
 
-    if (res.rank == n_ && res.dof > 0)
+    if (res.rank == n_ && (res.dof > 0 || (opts_.knownSigma && res.dof == 0)))
     {
         const Matrix& V = res.singularVectors;
         const Vector inv2 = res.singularValues.array().square().inverse();
@@ -630,7 +630,9 @@ void levenbergMarquardt::computeStatistics
         // The correlation of the estimates is that of (J^T J)^-1 whatever
         // s^2 is: from covS when s^2 = 0 (a zero-residual fit: zero
         // covariance, zero-width intervals, and 0/0 here would trap)
-        const bool zeroS2 = !(res.sigma2 > 0) && !opts_.knownSigma;
+        // (knownSigma first: with m = n, s^2 is NaN, and comparing a NaN
+        // traps under OpenFOAM's FP exceptions)
+        const bool zeroS2 = !opts_.knownSigma && !(res.sigma2 > 0);
         const Matrix& C = zeroS2 ? covS : res.covariance;
         for (int i = 0; i < n_; ++i)
         {
