@@ -26,7 +26,7 @@ namespace effectiveConductivityModels
 
 Foam::effectiveConductivityModels::constant::constant(const dictionary& coeffs)
 :
-    effectiveConductivityModel(coeffs),
+    twoComponentConductivityModel(coeffs),
     kappa_
     (
         checkedRead::get

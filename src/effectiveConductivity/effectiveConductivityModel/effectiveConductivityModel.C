@@ -22,22 +22,5 @@ Foam::effectiveConductivityModel::effectiveConductivityModel
     coeffs_(coeffs)
 {}
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::effectiveConductivityModel::kappaPartiallySaturated
-(
-    const scalar kappaSolid,
-    const scalar kappaLiquid,
-    const scalar kappaGas,
-    const scalar alphaL,
-    const scalar porosity
-) const
-{
-    return kappa
-    (
-        kappaSolid, alphaL*kappaLiquid + (1 - alphaL)*kappaGas, porosity
-    );
-}
-
 
 // ************************************************************************* //

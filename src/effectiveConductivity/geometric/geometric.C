@@ -26,7 +26,7 @@ namespace effectiveConductivityModels
 
 Foam::effectiveConductivityModels::geometric::geometric(const dictionary& coeffs)
 :
-    effectiveConductivityModel(coeffs)
+    twoComponentConductivityModel(coeffs)
 {}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -119,22 +119,6 @@ Foam::scalar Foam::effectiveConductivityModels::johansen::kappaSat
 }
 
 
-Foam::scalar Foam::effectiveConductivityModels::johansen::kappa
-(
-    const scalar,
-    const scalar,
-    const scalar
-) const
-{
-    FatalErrorInFunction
-        << "conductivityModel johansen gives k_e of the degree of"
-        << " saturation: it has no value for a pore fluid conductivity k_f"
-        << " without the liquid fraction" << nl
-        << exit(FatalError);
-    return 0;
-}
-
-
 Foam::scalar
 Foam::effectiveConductivityModels::johansen::kappaPartiallySaturated
 (

@@ -29,7 +29,7 @@ Foam::effectiveConductivityModels::kuniiSmith::kuniiSmith
     const dictionary& coeffs
 )
 :
-    effectiveConductivityModel(coeffs),
+    twoComponentConductivityModel(coeffs),
     beta_
     (
         checkedRead::getOrDefault

@@ -251,22 +251,6 @@ Foam::scalar Foam::effectiveConductivityModels::tabulated::interpolate
 }
 
 
-Foam::scalar Foam::effectiveConductivityModels::tabulated::kappa
-(
-    const scalar,
-    const scalar,
-    const scalar
-) const
-{
-    FatalErrorInFunction
-        << "conductivityModel tabulated gives k_e(alpha_l) ("
-        << source_.c_str() << "): it has no value for a pore fluid"
-        << " conductivity k_f without the liquid fraction" << nl
-        << exit(FatalError);
-    return 0;
-}
-
-
 Foam::scalar
 Foam::effectiveConductivityModels::tabulated::kappaPartiallySaturated
 (

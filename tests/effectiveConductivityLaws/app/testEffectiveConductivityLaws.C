@@ -25,7 +25,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "effectiveConductivityModel.H"
+#include "twoComponentConductivityModel.H"
 #include "johansen.H"
 #include "IStringStream.H"
 #include "unitChecks.H"
@@ -153,8 +153,11 @@ void testBadInput()
         [](){ model("conductivityModel johanssen;"); },
         {"johanssen", "johansen", "kuniiSmith"}, true);
     auto j = model("conductivityModel johansen; soilType fine;");
-    checkThrows("kappa(k_s, k_f, phi) without saturation",
-        [&](){ j->kappa(3, 0.6, 0.4); }, {"johansen", "liquid fraction"});
+    checkTrue("johansen is a law of the saturation, not k_e(k_s, k_f, phi)",
+        !isA<twoComponentConductivityModel>(*j)
+     && isA<twoComponentConductivityModel>
+        (*model("conductivityModel harmonic;")),
+        0, 0, "type");
 }
 
 } // End anonymous namespace
