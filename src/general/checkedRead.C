@@ -8,6 +8,8 @@
 #include "HashTable.H"
 #include "HashSet.H"
 #include "entry.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
 #include "wordRe.H"
 
 #include <cctype>
@@ -423,6 +425,28 @@ void Foam::checkedRead::checkAirTemperature
             << minAirTemperature << ", inf) K";
     }
     FatalIOError << nl << exit(FatalIOError);
+}
+
+
+Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const IOobject& io)
+{
+    // Read by dictionary::read, which keeps the input mode (an IOdictionary
+    // reads through operator>>, which resets it to merge)
+    const fileName path(io.globalFilePath(IOdictionary::typeName));
+    if (path.empty())
+    {
+        FatalErrorInFunction
+            << "Cannot find the file " << io.objectPath() << nl
+            << exit(FatalError);
+    }
+    IFstream is(path);
+    dictionary dict;
+    dict.name() = is.name();
+    const entry::inputMode previous = entry::globalInputMode;
+    entry::globalInputMode = entry::inputMode::ERROR;
+    dict.read(is);
+    entry::globalInputMode = previous;
+    return dict;
 }
 
 

@@ -123,6 +123,17 @@ if m:
     # end means the corner was not found (measured: 0.0158, chi^2 151)
     c.true('L-curve weight inside (1.3e-12, 8e11)', 1.3e-12 < wl < 8e11,
            '%.4g' % wl)
+    # The band holds the noise's variance only: a warning iff the weight
+    # leaves chi^2 above N + 2 sqrt(2N) (the regularisation's bias then
+    # exceeds the noise); none at the discrepancy weight (chi^2 = N)
+    chi2 = float(m.group(2))
+    N = int(re.search(r'\(N = (\d+) data', llog).group(1))
+    band = N + 2*math.sqrt(2*N)
+    warned = "above the noise's band" in llog
+    c.true('L-curve: bias warning iff chi^2 %.1f > N + 2 sqrt(2N) = %.1f'
+           % (chi2, band), warned == (chi2 > band), 'warned %s' % warned)
+    dlog = open(os.path.join(scratch, 'knots/log.hearthFit')).read()
+    c.true('discrepancy: no bias warning', "above the noise's band" not in dlog)
 lc = params('lcurve')
 el = rms_error(lc)
 print('    L-curve: RMS error %.3f C, truth in band at %d of 25 knots'

@@ -8,6 +8,7 @@
 #include "fitObservations.H"
 #include "fireHistory.H"
 #include "checkedRead.H"
+#include "IFstream.H"
 
 #include <cmath>
 #include <fstream>
@@ -46,6 +47,88 @@ hearthFit::FitParameter readBounded
             << ", initial " << p.initial << ")" << exit(FatalIOError);
     }
     return p;
+}
+
+//- FatalIOError unless a patch of the case's temperature field (start
+//  time) has the boundary condition fireTemperature reading the fire CSV
+//  file (relative to the case): a CSV no patch reads would leave the fire
+//  parameters without effect, one that is another case file would
+//  overwrite it in every copy
+void checkFireFileRead
+(
+    const dictionary& dict,
+    const fileName& casePath,
+    const word& startName,
+    const fileName& file
+)
+{
+    const fileName TPath(casePath/startName/"T");
+    fileName target(casePath/file);
+    target.clean();
+    wordList readers;
+    if (isFile(TPath))
+    {
+        IFstream is(TPath);
+        const dictionary T(is);
+        const dictionary* bf = T.findDict("boundaryField");
+        if (bf)
+        {
+            for (const entry& e : *bf)
+            {
+                if
+                (
+                    !e.isDict()
+                 || e.dict().getOrDefault<word>("type", word::null)
+                    != "fireTemperature"
+                 || !e.dict().found("file")
+                )
+                {
+                    continue;
+                }
+                ITstream& its = e.dict().lookup("file");
+                token tok;
+                its.read(tok);
+                if (!tok.isStringType()) continue;
+                fileName f(tok.stringToken());
+                f.expand();
+                if (!f.isAbsolute()) f = casePath/f;
+                f.clean();
+                if (f == target) return;
+                readers.append(e.keyword() + ": " + f);
+            }
+        }
+    }
+    FatalIOErrorInFunction(dict)
+        << "fire: file " << file << ": no patch of " << TPath
+        << " reads it: expected a patch with the boundary condition"
+        << " fireTemperature whose file is this one (e.g. file"
+        << " \"<constant>/fire.csv\"); fireTemperature patches and their"
+        << " files: " << readers << exit(FatalIOError);
+}
+
+
+//- FatalIOError if a fire parameter (from first on) has the name of an
+//  earlier parameter (priors and reports name parameters)
+void checkNamesUnique
+(
+    const dictionary& dict,
+    const fitParameters& params,
+    const label first
+)
+{
+    for (size_t j = first; j < params.specs.size(); ++j)
+    {
+        for (size_t i = 0; i < size_t(first); ++i)
+        {
+            if (params.specs[i].name == params.specs[j].name)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "fire: parameter " << params.specs[j].name.c_str()
+                    << " has the name of a parameter of 'parameters':"
+                    << " rename that one" << exit(FatalIOError);
+            }
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -121,6 +204,7 @@ Foam::fitFire::fitFire
             << "fire: file " << file_ << ": no directory "
             << casePath/file_.path() << exit(FatalIOError);
     }
+    checkFireFileRead(dict, casePath, startName, file_);
 
     if (type_ == Type::law)
     {
@@ -158,6 +242,7 @@ Foam::fitFire::fitFire
             params.pars.push_back(p);
             params.initialFactor.push_back(0);
         }
+        checkNamesUnique(dict, params, first_);
         return;
     }
 
@@ -211,6 +296,7 @@ Foam::fitFire::fitFire
         params.pars.push_back(p);
         params.initialFactor.push_back(0);
     }
+    checkNamesUnique(dict, params, first_);
 
     const dictionary* reg = dict.findDict("regularisation");
     if (dict.found("regularisation") && !reg)
@@ -226,11 +312,20 @@ Foam::fitFire::fitFire
         *reg, wordList({"order", "rule", "weight"}), "fire regularisation"
     );
     const word rule(reg->get<word>("rule"));
-    if (rule == "none") return;
+    // rule none: order still checked (switching the rule back is one
+    // word), a weight refused (it is for rule fixed only)
+    const bool noRule = (rule == "none");
+    if (noRule && reg->found("weight"))
+    {
+        FatalIOErrorInFunction(*reg)
+            << "fire regularisation: the weight is for rule fixed only, not"
+            << " rule none (remove it)" << exit(FatalIOError);
+    }
+    if (noRule && !reg->found("order")) return;
     if (rule == "discrepancy") rule_ = hearthFit::tikhonov::Rule::discrepancy;
     else if (rule == "lCurve") rule_ = hearthFit::tikhonov::Rule::lCurve;
     else if (rule == "fixed") rule_ = hearthFit::tikhonov::Rule::fixed;
-    else
+    else if (!noRule)
     {
         FatalIOErrorInFunction(*reg)
             << "fire regularisation: rule " << rule << ": valid choices:"
@@ -250,6 +345,11 @@ Foam::fitFire::fitFire
         FatalIOErrorInFunction(*reg)
             << "fire regularisation: order " << order_ << " needs at least "
             << order_ + 1 << " knots" << exit(FatalIOError);
+    }
+    if (noRule)
+    {
+        order_ = 0;
+        return;
     }
     if (rule_ == hearthFit::tikhonov::Rule::fixed)
     {
@@ -347,7 +447,9 @@ void Foam::fitFire::chooseWeight
         return;
     }
 
-    // The linearisation at p0: one forward difference per parameter
+    // The linearisation at p0: one forward difference per parameter (steps
+    // of 1e-3 max(|p|, typical, 1): not those of the fit's first Jacobian,
+    // whose runs are therefore made again)
     const label n = p0.size(), m = obs.size();
     std::vector<hearthFit::Evaluation> batch(n + 1);
     std::vector<double> h(n);
@@ -388,6 +490,23 @@ void Foam::fitFire::chooseWeight
     {
         WarningInFunction << "fire regularisation: " << c.message.c_str()
             << endl;
+    }
+
+    // The intervals of the knots hold the noise's variance only, not the
+    // regularisation's bias: honest when the weight leaves chi^2 within
+    // the noise's band (the discrepancy rule: chi^2 = N), not when it
+    // smooths more (chi^2 above N + 2 sqrt(2N), two standard deviations
+    // of a chi-square of N degrees of freedom)
+    const scalar chi2Band = m + 2*std::sqrt(2.0*m);
+    if (c.chi2 > chi2Band)
+    {
+        WarningInFunction
+            << "fire regularisation: the weight (rule " << ruleName
+            << ") leaves chi^2 = " << c.chi2 << " above the noise's band"
+            << " N + 2 sqrt(2N) = " << chi2Band << ": the regularisation"
+            << " biases the history by more than the noise, and the knots'"
+            << " intervals (the noise's variance only) do not cover that"
+            << " bias. Rule discrepancy keeps chi^2 = N" << endl;
     }
 }
 

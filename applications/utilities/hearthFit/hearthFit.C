@@ -331,7 +331,7 @@ int main(int argc, char *argv[])
         if (reg)
         {
             // The fire's regularisation weight on the linearisation at the
-            // initial (or resumed) values, its runs reused by the fit
+            // initial (or resumed) values, n + 1 runs of its own
             hearthFit::Vector p0(params.size());
             for (label j = 0; j < params.size(); ++j)
             {
