@@ -112,7 +112,7 @@ nFine = steps('timeStep/postProcessing/hearthFit/refined/log.run')
 nFit = steps('timeStep/postProcessing/hearthFit/scratch0/log.run')
 c.le('timeStep: the fit run\'s steps %d x 1.5 <= the finer run\'s %d'
      % (nFit, nFine), 1.5*nFit, nFine)
-c.true('timeStep: check made', abs(check('timeStep')['shift_se']) >= 0,
+c.true('timeStep: check made, its shift finite', abs(check('timeStep')['shift_se']) >= 0,
        'shift %.3g se' % check('timeStep')['shift_se'])
 
 # 6. Bad input
@@ -120,5 +120,21 @@ bad = open('badInput.txt').read().splitlines()
 c.true('bad input: 8 cases, each a FatalIOError before any run',
        len(bad) == 8 and all(': ok (' in b for b in bad),
        '%d of %d ok' % (sum(': ok (' in b for b in bad), len(bad)))
+
+# 7. SIGINT during the check
+status = int(open('interrupt/status').read())
+log = open('interrupt/log.hearthFit').read()
+work = 'interrupt/postProcessing/hearthFit'
+c.true('interrupt: exit status 130 (128 + SIGINT)', status == 130,
+       str(status))
+c.true('interrupt: during the check, said so',
+       'Refinement check interrupted (signal 2)' in log)
+c.true('interrupt: the fit\'s results written, no refinementCheck.csv',
+       os.path.exists(os.path.join(work, 'parameters.csv'))
+       and not os.path.exists(os.path.join(work, 'refinementCheck.csv')))
+c.true('interrupt: scratch copies removed, no solver left',
+       not [d for d in os.listdir(work) if d.startswith('scratch')
+            or d == 'refined']
+       and not open('interrupt/solversLeft').read().strip())
 
 c.done()

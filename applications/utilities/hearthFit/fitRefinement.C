@@ -242,7 +242,11 @@ void Foam::fitRefinement::check
     {
         const int sig = scratchCase::interrupted();
         Info<< "Refinement check interrupted (signal " << sig << ")" << endl;
-        if (!keepScratch) copy.clean();
+        if (!keepScratch)
+        {
+            copy.clean();
+            fwd.clean();
+        }
         Pstream::exit(128 + sig);
     }
     if (!keepScratch) copy.clean();
