@@ -115,6 +115,18 @@ c.le('timeStep: the fit run\'s steps %d x 1.5 <= the finer run\'s %d'
 c.true('timeStep: check made, its shift finite', abs(check('timeStep')['shift_se']) >= 0,
        'shift %.3g se' % check('timeStep')['shift_se'])
 
+# 5c. A failing meshCommand: a warning with its own message, the fit's
+# results stand
+log = open('meshFails/log.hearthFit').read()
+work = 'meshFails/postProcessing/hearthFit'
+c.true('meshFails: warning with refineMesh\'s message, log kept',
+       'refinement check not made: meshCommand failed (exit status 1)' in log
+       and 'Cannot open specified refinement dictionary' in log
+       and os.path.exists(os.path.join(work, 'refinementCheck.failed.log')))
+c.true('meshFails: no shift reported, the fit\'s results written',
+       not os.path.exists(os.path.join(work, 'refinementCheck.csv'))
+       and os.path.exists(os.path.join(work, 'parameters.csv')))
+
 # 6. Bad input
 bad = open('badInput.txt').read().splitlines()
 c.true('bad input: 8 cases, each a FatalIOError before any run',

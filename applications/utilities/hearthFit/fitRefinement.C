@@ -16,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sys/wait.h>
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -211,6 +212,7 @@ void Foam::fitRefinement::check
 
     hearthFit::Vector rFine;
     std::string why;
+    fileName failedLog;
     try
     {
         if (meshCommand_.size())
@@ -221,8 +223,13 @@ void Foam::fitRefinement::check
             if (status != 0)
             {
                 why = "meshCommand failed (exit status "
-                    + std::to_string(status) + ", log " + log + "):\n"
+                    + std::to_string
+                      (
+                          WIFEXITED(status) ? WEXITSTATUS(status) : status
+                      )
+                    + "):\n"
                     + scratchCase::errorMessage(log);
+                failedLog = log;
             }
         }
         if (why.empty() && timeStepFactor_ < 1)
@@ -231,11 +238,13 @@ void Foam::fitRefinement::check
         }
         if (why.empty() && fwd.nProcs > 1 && !copy.decompose())
         {
-            why = "decomposePar failed (see " + dir/"log.decomposePar" + ")";
+            why = "decomposePar failed";
+            failedLog = dir/"log.decomposePar";
         }
         if (why.empty() && !fwd.runIn(copy, rFine, why, obs))
         {
             why = "the finer run failed (" + why + ")";
+            failedLog = dir/"log.run";
         }
     }
     catch (const fitInterrupted&)
@@ -248,6 +257,12 @@ void Foam::fitRefinement::check
             fwd.clean();
         }
         Pstream::exit(128 + sig);
+    }
+    if (why.size() && isFile(failedLog))
+    {
+        cp(failedLog, fwd.workDir/"refinementCheck.failed.log");
+        why += "\n    log kept as "
+          + fwd.workDir/"refinementCheck.failed.log";
     }
     if (!keepScratch) copy.clean();
     if (why.size())
