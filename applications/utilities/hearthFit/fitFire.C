@@ -145,6 +145,7 @@ Foam::fitFire::fitFire
 )
 :
     type_(Type::knots),
+    dict_(dict),
     first_(params.size()),
     order_(0),
     rule_(hearthFit::tikhonov::Rule::fixed),
@@ -413,12 +414,21 @@ void Foam::fitFire::write
 
 std::unique_ptr<hearthFit::tikhonov> Foam::fitFire::regularisation
 (
-    const label nPar
+    const label nPar,
+    const bool sigmaGiven
 ) const
 {
     if (type_ != Type::knots || order_ == 0)
     {
         return nullptr;
+    }
+    if (!sigmaGiven)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "fire regularisation: the weight is absolute (chi^2 against"
+            << " the number of data): give the data's noise,"
+            << " observations/sigma (or sigmas, or a sigma per group)"
+            << exit(FatalIOError);
     }
     return std::unique_ptr<hearthFit::tikhonov>
     (
@@ -430,7 +440,6 @@ std::unique_ptr<hearthFit::tikhonov> Foam::fitFire::regularisation
 void Foam::fitFire::chooseWeight
 (
     hearthFit::tikhonov& reg,
-    const hearthFit::Vector& p0,
     fitForwardRuns& fwd,
     const fitParameters& params,
     const fitObservations& obs
@@ -447,10 +456,16 @@ void Foam::fitFire::chooseWeight
         return;
     }
 
-    // The linearisation at p0: one forward difference per parameter (steps
-    // of 1e-3 max(|p|, typical, 1): not those of the fit's first Jacobian,
-    // whose runs are therefore made again)
-    const label n = p0.size(), m = obs.size();
+    // The linearisation at the initial (or resumed) values p0: one forward
+    // difference per parameter (steps of 1e-3 max(|p|, typical, 1): not
+    // those of the fit's first Jacobian, whose runs are therefore made
+    // again)
+    const label n = params.size(), m = obs.size();
+    hearthFit::Vector p0(n);
+    for (label j = 0; j < n; ++j)
+    {
+        p0(j) = params.pars[j].initial;
+    }
     std::vector<hearthFit::Evaluation> batch(n + 1);
     std::vector<double> h(n);
     batch[0].parameters = p0;

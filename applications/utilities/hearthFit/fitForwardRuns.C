@@ -352,6 +352,25 @@ void Foam::fitForwardRuns::evaluate
 }
 
 
+bool Foam::fitForwardRuns::runIn
+(
+    scratchCase& copy,
+    hearthFit::Vector& r,
+    std::string& why,
+    const fitObservations& obs
+) const
+{
+    rm(copy.path()/"log.run");
+    copy.startSolver(solver, copy.path()/"log.run");
+    const int status = copy.wait();
+    if (scratchCase::interrupted())
+    {
+        throw fitInterrupted();
+    }
+    return collect(copy.path(), status, r, why, obs);
+}
+
+
 void Foam::fitForwardRuns::clean() const
 {
     for (const scratchCase& copy : slots_)

@@ -184,6 +184,42 @@ Foam::fitParameters::fitParameters
 }
 
 
+Foam::fitParameters::fitParameters
+(
+    const dictionary& fitDict,
+    const fileName& casePath,
+    const word& startName
+)
+:
+    fitParameters
+    (
+        &parametersDict(fitDict), casePath, fitDict.findDict("fire"),
+        startName
+    )
+{}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+const Foam::dictionary& Foam::fitParameters::parametersDict
+(
+    const dictionary& fitDict
+)
+{
+    const dictionary* fireDict = fitDict.findDict("fire");
+    if (fitDict.found("fire") && !fireDict)
+    {
+        FatalIOErrorInFunction(fitDict) << "fire: a sub-dictionary"
+            << exit(FatalIOError);
+    }
+    // Without parameters, the fire's are the only ones
+    return
+        fireDict && !fitDict.found("parameters")
+      ? dictionary::null
+      : fitDict.subDict("parameters");
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::fitParameters::readPriors
@@ -238,6 +274,15 @@ void Foam::fitParameters::readPriors
             checkedRead::get(*d, "sd", dimless, checkedRead::positive())
            .value();
     }
+}
+
+
+std::unique_ptr<hearthFit::tikhonov> Foam::fitParameters::regularisation
+(
+    const bool sigmaGiven
+) const
+{
+    return fire ? fire->regularisation(size(), sigmaGiven) : nullptr;
 }
 
 

@@ -42,7 +42,7 @@ Description
     Optimiser: hearthFit::levenbergMarquardt (src/numerics/leastSquares).
     Parts: fitParameters, fitObservations, fitForwardRuns (scratch copies:
     src/general/scratchCase), fitMethod, fitState (-resume), fitReport,
-    firstEstimate (laloyMassard).
+    firstEstimate (laloyMassard), fitRefinement.
 
     A given sigma (sigma or sigmas) is the noise of the measurements: the
     intervals are computed from it (not scaled by s^2) and s^2 is tested
@@ -64,6 +64,12 @@ Description
     surface temperature on knots, Tikhonov-regularised (weight by the
     discrepancy principle or the L-curve, printed: hearthFit::tikhonov),
     or the duration and plateau temperature of the fire law.
+
+    Discretisation bias (sub-dictionary refinementCheck, fitRefinement):
+    after the fit, one run at the estimate on a finer model (refined mesh
+    and/or smaller time step) and the estimate's shift that the finer
+    model would give, one Gauss-Newton step with the final Jacobian,
+    reported in standard errors with a warning above 0.5.
 
     Nothing is written outside <workDir> but the -writeCase copy: an
     existing -writeCase directory is refused without -overwrite, the case
@@ -97,6 +103,7 @@ Usage
 #include "fitReport.H"
 #include "firstEstimate.H"
 #include "fitFire.H"
+#include "fitRefinement.H"
 #include "tikhonov.H"
 
 #include <csignal>
@@ -195,27 +202,19 @@ int main(int argc, char *argv[])
         wordList
         ({
             "parameters", "observations", "forwardModel", "method",
-            "firstEstimate", "priors", "predictions", "fire"
+            "firstEstimate", "priors", "predictions", "fire",
+            "refinementCheck"
         })
     );
 
     // ---- The set-up, every input checked before any run
     hearthFit::FitOptions opts(readFitMethod(fitDict));
-    const dictionary* fireDict = fitDict.findDict("fire");
-    if (fitDict.found("fire") && !fireDict)
-    {
-        FatalIOErrorInFunction(fitDict) << "fire: a sub-dictionary"
-            << exit(FatalIOError);
-    }
-    const dictionary& parsDict =
-        fireDict
-      ? fitDict.subOrEmptyDict("parameters")
-      : fitDict.subDict("parameters");
-    fitParameters params(&parsDict, casePath, fireDict, startName);
+    fitParameters params(fitDict, casePath, startName);
     fitObservations obs(fitDict.subDict("observations"), runTime, params.size());
     params.readPriors(fitDict, obs.sigmaGiven);
     const dictionary& fwdDict = fitDict.subDict("forwardModel");
     fitForwardRuns fwd(fwdDict, runTime);
+    const auto refinement(fitRefinement::New(fitDict, runTime));
 
     const dictionary* firstDict = fitDict.findDict("firstEstimate");
     const dictionary* predDict = fitDict.findDict("predictions");
@@ -224,7 +223,8 @@ int main(int argc, char *argv[])
         params.readSensorFile
         (
             runTime.controlDict().subDict("functions").subDict(fwd.foName),
-            fwd.foName, casePath, startName, parsDict
+            fwd.foName, casePath, startName,
+            fitParameters::parametersDict(fitDict)
         );
     }
     if (firstDict)
@@ -249,18 +249,7 @@ int main(int argc, char *argv[])
     fitPredictions preds(predDict, params);
     obs.predictions = &preds;
     hearthFit::fitPosterior post(params.priors, obs.size(), preds.size());
-    std::unique_ptr<hearthFit::tikhonov> reg
-    (
-        params.fire ? params.fire->regularisation(params.size()) : nullptr
-    );
-    if (reg && !obs.sigmaGiven)
-    {
-        FatalIOErrorInFunction(*fireDict)
-            << "fire regularisation: the weight is absolute (chi^2 against"
-            << " the number of data): give the data's noise,"
-            << " observations/sigma (or sigmas, or a sigma per group)"
-            << exit(FatalIOError);
-    }
+    const auto reg(params.regularisation(obs.sigmaGiven));
 
     // A given sigma is the noise: intervals from it, s^2 tested against its
     // chi-square band; none: intervals scaled by s^2
@@ -328,17 +317,9 @@ int main(int argc, char *argv[])
     hearthFit::FitResult res;
     try
     {
-        if (reg)
-        {
-            // The fire's regularisation weight on the linearisation at the
-            // initial (or resumed) values, n + 1 runs of its own
-            hearthFit::Vector p0(params.size());
-            for (label j = 0; j < params.size(); ++j)
-            {
-                p0(j) = params.pars[j].initial;
-            }
-            params.fire->chooseWeight(*reg, p0, fwd, params, obs);
-        }
+        // The fire's regularisation weight, chosen on the linearisation
+        // at the initial (or resumed) values (n + 1 runs of its own)
+        if (reg) params.fire->chooseWeight(*reg, fwd, params, obs);
         res = lm->solve();
     }
     catch (const fitInterrupted&)
@@ -353,6 +334,13 @@ int main(int argc, char *argv[])
     // ---- Report, the case with the best parameters
     report.write(res, opts);
     report.writePosterior(res, post, preds);
+    if (refinement)
+    {
+        refinement->check
+        (
+            res, fwd, params, obs, runTime, args.found("keepScratch")
+        );
+    }
 
     if (writeCasePath.size())
     {
