@@ -191,22 +191,22 @@ Foam::fitParameters::fitParameters
         if (mover.found(sensor) && mover[sensor] != by)
         {
             FatalIOErrorInFunction(parsDict)
-                << "parameters " << mover[sensor] << " and " << by
-                << ": sensor " << sensor << " is moved by both (a sensor"
-                << " belongs to one displacement group, or has offsets)"
-                << exit(FatalIOError);
+                << "parameters: sensor " << sensor << " is moved by "
+                << mover[sensor] << " and by " << by << " (a sensor"
+                << " belongs to one displacement group at most, and a"
+                << " grouped sensor takes no offset)" << exit(FatalIOError);
         }
         mover.set(sensor, by);
     };
     for (const ParameterSpec& s : specs)
     {
-        if (s.component >= 0) claim(s.sensor, "(offsets)");
+        if (s.component >= 0) claim(s.sensor, "an offset parameter");
     }
     for (const auto& g : displacements)
     {
         for (const word& sensor : g->sensors())
         {
-            claim(sensor, g->name());
+            claim(sensor, "the displacement group " + g->name());
         }
     }
     if (fireDict)
