@@ -239,6 +239,33 @@ int main()
         check("displacements: parallel normals (1-D): n - 1 = 5 unknowns", sub1.Z.cols() == 5, sub1.Z.cols(), 5);
         checkThrows("displacements: 2 sensors throw", [](){ sd::substitution({0, 1}); });
         checkThrows("displacements: zero gradient throws", [](){ sd::normalAngle(0, 0); });
+        // Confocal normals (Mansour 2015 §5.2.4 (i)): the isotherms of the
+        // steady temperature under a disc held at T_c on an insulated
+        // half-space, T/T_c = (2/pi) asin(2R/(d1 + d2)) (the potential of
+        // a charged disc), are the confocal ellipses: -grad T, by central
+        // differences (h = 1e-7 m: error ~h^2 T''' ~ 1e-10 rad), has the
+        // angle of confocalNormalAngle
+        {
+            const double R = 0.05;
+            auto T = [R](const double r, const double z)
+            {
+                return 2/M_PI*std::asin(2*R/(std::hypot(r - R, z) + std::hypot(r + R, z)));
+            };
+            double worst = 0;
+            const double pts[6][2] = {{0.009, -0.009}, {0.027, -0.098}, {0.07, -0.01}, {0.2, -0.25}, {0.0, -0.03}, {0.049, -0.001}};
+            for (const auto& rz : pts)
+            {
+                const double h = 1e-7, r = rz[0], z = rz[1];
+                const double gr = (T(r + h, z) - T(r - h, z))/(2*h);
+                const double gz = (T(r, z + h) - T(r, z - h))/(2*h);
+                const double d = std::remainder(sd::confocalNormalAngle(r, z, R) - std::atan2(-gz, -gr), 2*M_PI);
+                worst = std::max(worst, std::abs(d));
+            }
+            check("confocal normal = -grad of the disc's steady T, 6 points, 1e-6 rad", worst < 1e-6, worst, 0);
+            checkRel("confocal normal on the axis below the fire: -pi/2", sd::confocalNormalAngle(0, -0.02, R), -M_PI/2, 1e-15);
+            checkThrows("confocal normal on the fire's disc throws", [R](){ sd::confocalNormalAngle(0.01, 0, R); });
+            checkThrows("confocal normal with R = 0 throws", [](){ sd::confocalNormalAngle(0.01, -0.01, 0); });
+        }
         checkThrows("displacements: wrong q size throws", [&](){ std::vector<double> a, b; sd::displace(sub, Eigen::VectorXd(3), 0, 0, r0, z0, a, b); });
     }
 

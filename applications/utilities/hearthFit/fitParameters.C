@@ -4,6 +4,7 @@
 
 #include "fitParameters.H"
 #include "fitFire.H"
+#include "fitDisplacements.H"
 #include "thermocouples.H"
 #include "checkedRead.H"
 #include "scratchCase.H"
@@ -35,6 +36,18 @@ Foam::fitParameters::fitParameters
                 << exit(FatalIOError);
         }
         const dictionary& d = e.dict();
+        if (fitDisplacements::isGroup(d))
+        {
+            // Sensors displaced along their isotherm normals (§5.2.4)
+            displacements.emplace_back
+            (
+                new fitDisplacements
+                (
+                    e.keyword(), d, displacements.size(), *this
+                )
+            );
+            continue;
+        }
         ParameterSpec s;
         s.name = e.keyword();
         checkedRead::checkKeywords
@@ -171,6 +184,31 @@ Foam::fitParameters::fitParameters
         specs.push_back(s);
         pars.push_back(p);
     }
+    // A sensor moves by one group or one set of offsets
+    HashTable<word> mover;
+    auto claim = [&](const word& sensor, const word& by)
+    {
+        if (mover.found(sensor) && mover[sensor] != by)
+        {
+            FatalIOErrorInFunction(parsDict)
+                << "parameters: sensor " << sensor << " is moved by "
+                << mover[sensor] << " and by " << by << " (a sensor"
+                << " belongs to one displacement group at most, and a"
+                << " grouped sensor takes no offset)" << exit(FatalIOError);
+        }
+        mover.set(sensor, by);
+    };
+    for (const ParameterSpec& s : specs)
+    {
+        if (s.component >= 0) claim(s.sensor, "an offset parameter");
+    }
+    for (const auto& g : displacements)
+    {
+        for (const word& sensor : g->sensors())
+        {
+            claim(sensor, "the displacement group " + g->name());
+        }
+    }
     if (fireDict)
     {
         fire.reset(new fitFire(*fireDict, casePath, startName, *this));
@@ -292,7 +330,7 @@ bool Foam::fitParameters::anyOffset() const
     {
         if (s.component >= 0) return true;
     }
-    return false;
+    return !displacements.empty();
 }
 
 
@@ -302,7 +340,7 @@ bool Foam::fitParameters::inDirectory(const word& dirName) const
     {
         if
         (
-            s.component < 0 && s.fireIndex < 0
+            s.component < 0 && s.fireIndex < 0 && s.group < 0
          && s.file.components()[0] == dirName
         )
         {
@@ -413,6 +451,10 @@ void Foam::fitParameters::readSensorFile
                 << exit(FatalIOError);
         }
     }
+    for (const auto& g : displacements)
+    {
+        g->setSensors(sensorFile);
+    }
 }
 
 
@@ -437,7 +479,7 @@ void Foam::fitParameters::write
             }
             continue;
         }
-        if (specs[j].fireIndex >= 0)
+        if (specs[j].fireIndex >= 0 || specs[j].group >= 0)
         {
             continue;
         }
@@ -445,6 +487,10 @@ void Foam::fitParameters::write
         dictionary* d =
             scratchCase::parentDict(dicts[specs[j].file], specs[j].entry, key);
         d->set(key, specs[j].scale*p(j));
+    }
+    for (const auto& g : displacements)
+    {
+        g->move(p, xyz);
     }
     if (fire)
     {

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fitReport.H"
+#include "fitDisplacements.H"
 #include "fitPredictions.H"
 #include "casePaths.H"
 #include "scratchCase.H"
@@ -377,6 +378,10 @@ void Foam::fitReport::write
                << (res.upperConfidence.size() > j ? res.upperConfidence(j) : std::nan(""))
                << "\n";
         }
+    }
+    for (const auto& g : params_.displacements)
+    {
+        g->write(res, fwd_.workDir, &g == &params_.displacements[0]);
     }
     Info<< "Written " << fwd_.workDir/"report.txt" << ", "
         << fwd_.workDir/"fitted.csv" << ", " << fwd_.workDir/"parameters.csv" << ", "

@@ -27,6 +27,35 @@ double hearthFit::sensorDisplacements::normalAngle
 }
 
 
+double hearthFit::sensorDisplacements::confocalNormalAngle
+(
+    const double r,
+    const double z,
+    const double R
+)
+{
+    if (!(R > 0) || !std::isfinite(R) || !std::isfinite(r) || !std::isfinite(z))
+    {
+        throw std::invalid_argument
+        (
+            "sensorDisplacements: confocal normals need a fire radius > 0"
+            " and finite positions"
+        );
+    }
+    const double d1 = std::hypot(r - R, z);
+    const double d2 = std::hypot(r + R, z);
+    if (z == 0 && std::abs(r) <= R)
+    {
+        throw std::invalid_argument
+        (
+            "sensorDisplacements: a point on the fire's disc (or its edge):"
+            " no confocal ellipse through it"
+        );
+    }
+    return std::atan2(z/d1 + z/d2, (r - R)/d1 + (r + R)/d2);
+}
+
+
 hearthFit::sensorDisplacements::Substitution
 hearthFit::sensorDisplacements::substitution(const std::vector<double>& phi)
 {
