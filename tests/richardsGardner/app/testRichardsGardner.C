@@ -14,7 +14,8 @@ Description
         |W^(n+1) - W^n + dt F_out(S^(n+1))|/W^n
     (W the water mass, F_out the mass flow out through the patches), and
     writes profile.csv (z = height against gravity, S, p_l, pressure head
-    h = (p_l - p_g)/(rho_l |g|)) at the end, for check.py.
+    h = (p_l - p_g)/(rho_l |g|); every rank's cells, sorted by z) at the
+    end, for check.py.
     With -jacobian, checks first the face-by-face finite-difference
     Jacobian at 0/S (the first step's dt) against a central difference of
     the full residual, every column (steps 1e-6, relative error <= 1e-6:
@@ -32,6 +33,7 @@ Description
 #include "checkedRead.H"
 #include "unitChecks.H"
 #include "OFstream.H"
+#include "ListListOps.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -145,6 +147,12 @@ int main(int argc, char *argv[])
     const scalar endTime = runTime.endTime().value();
     scalar dt = runTime.deltaTValue();
 
+    if (args.found("jacobian") && Pstream::parRun())
+    {
+        // (its loop over the columns would differ between the ranks)
+        FatalErrorInFunction
+            << "-jacobian is serial only" << exit(FatalError);
+    }
     if (args.found("jacobian"))
     {
         res.setOldTime(S - 0.01*(S - res.minSaturation()), dt);
@@ -193,20 +201,39 @@ int main(int argc, char *argv[])
         << worstBalance << nl
         << "largest change of S in the last step " << lastChange << endl;
 
-    // The profile (serial: one column)
+    // The profile: the cells of every rank, gathered on the master and
+    // sorted by height (one column)
     const vector g(res.darcy().g());
     const vector up(-g/mag(g));
     const scalar rhoG = res.darcy().rhoLiquid()*mag(g);
-    OFstream os(runTime.path()/"profile.csv");
-    os.precision(17);
-    os  << "z,S,pl,h" << nl;
-    forAll(S, c)
+    List<scalarField> zs(Pstream::nProcs()), Ss(Pstream::nProcs());
+    zs[Pstream::myProcNo()] = mesh.C().primitiveField() & up;
+    Ss[Pstream::myProcNo()] = S;
+    Pstream::gatherList(zs);
+    Pstream::gatherList(Ss);
+    if (Pstream::master())
     {
-        const scalar pl =
-            res.gasPressure()
-          - res.capillaryPressure().pc(S[c], res.temperature());
-        os  << (mesh.C()[c] & up) << ',' << S[c] << ',' << pl << ','
-            << (pl - res.gasPressure())/rhoG << nl;
+        const scalarField z(ListListOps::combine<scalarField>
+        (
+            zs, accessOp<scalarField>()
+        ));
+        const scalarField Sall(ListListOps::combine<scalarField>
+        (
+            Ss, accessOp<scalarField>()
+        ));
+        labelList order;
+        sortedOrder(z, order);
+        OFstream os(args.rootPath()/args.globalCaseName()/"profile.csv");
+        os.precision(17);
+        os  << "z,S,pl,h" << nl;
+        for (const label c : order)
+        {
+            const scalar pl =
+                res.gasPressure()
+              - res.capillaryPressure().pc(Sall[c], res.temperature());
+            os  << z[c] << ',' << Sall[c] << ',' << pl << ','
+                << (pl - res.gasPressure())/rhoG << nl;
+        }
     }
     Info<< "balance " << worstBalance << nl
         << "lastChange " << lastChange << nl
