@@ -111,18 +111,6 @@ Foam::liquidDarcyFlux::liquidState Foam::richardsResidual::state
 }
 
 
-void Foam::richardsResidual::patchFace
-(
-    const label facei,
-    label& patchi,
-    label& i
-) const
-{
-    patchi = fvMesh_.boundaryMesh().whichPatch(facei);
-    i = facei - fvMesh_.boundaryMesh()[patchi].start();
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::richardsResidual::richardsResidual
