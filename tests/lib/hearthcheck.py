@@ -42,13 +42,14 @@ def read_energy_balances(log):
 
 
 def read_solver_cost(log):
-    """Cost of an ahcFoam or pendularFoam run from its log: the sums over
+    """Cost of an ahcFoam or pendularFoam run (or of a richardsResidual
+    test's, 'richards:') from its log: the sums over
     the time steps of the per-step summary line
       '<solver>: deltaT = .., iterations = N, sub-steps = M, rejected = R, ..'
     -> dict(steps, iterations, subSteps, rejected). A log without such a
     line (the solver failed at once) gives zero steps."""
     cost = dict(steps=0, iterations=0, subSteps=0, rejected=0)
-    pattern = re.compile(r'^(ahcFoam|pendularFoam): deltaT = \S+, iterations = '
+    pattern = re.compile(r'^(ahcFoam|pendularFoam|richards): deltaT = \S+, iterations = '
                          r'(\d+), sub-steps = (\d+), rejected = (\d+)')
     with open(log) as f:
         for line in f:

@@ -227,6 +227,20 @@ void Foam::coupledResidual::evaluate
 }
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::coupledResidual::patchFace
+(
+    const label facei,
+    label& patchi,
+    label& i
+) const
+{
+    patchi = mesh_.boundaryMesh().whichPatch(facei);
+    i = facei - mesh_.boundaryMesh()[patchi].start();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::coupledResidual::coupledResidual

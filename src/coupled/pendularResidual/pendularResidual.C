@@ -215,18 +215,6 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
 }
 
 
-void Foam::pendularResidual::patchFace
-(
-    const label facei,
-    label& patchi,
-    label& i
-) const
-{
-    patchi = fvMesh_.boundaryMesh().whichPatch(facei);
-    i = facei - fvMesh_.boundaryMesh()[patchi].start();
-}
-
-
 void Foam::pendularResidual::flux
 (
     const cellState& o,

@@ -20,6 +20,8 @@ Description
     - pendular: p_c = sigma C/(R_0 sqrt(S)) (asymptotic toroidal meniscus,
       EWGM report eq. 17) with the IAPWS sigma; Kelvin's law with this
       p_c equals kelvinLaplace's lnRelativeHumidity (EWGM report eq. 11);
+    - exponential: S_e = exp(-p_c/p_0) (Gardner's soil, Srivastava and
+      Yeh 1991) returns S_e; p_c(1/e) = p_0;
     - residual saturations: S = S_wr + S_e (1 - S_wr - S_gr) maps to S_e;
       above 1 - S_gr p_c = p_c(1) and dp_c/dS = 0.
 
@@ -151,6 +153,28 @@ void testBrooksCorey()
 }
 
 
+void testExponential()
+{
+    section("exponential (Gardner's soil)");
+    const scalar p0 = 4905, Swr = 0.1;
+    auto ex = model
+    (
+        "capillaryPressureModel exponential; Swr 0.1;"
+        "exponentialCoeffs { p0 4905; }"
+    );
+    for (const scalar Se : {0.01, 0.3, 0.7, 0.99})
+    {
+        const scalar S = Swr + Se*(1 - Swr);
+        checkRel(fmt("exponential exp(-p_c/p_0) at S_e = %g gives S_e", Se),
+            std::exp(-ex->pc(S, 300)/p0), Se, 1e-12);
+        checkDerivatives("exponential", *ex, S, 300, false);
+    }
+    checkAbs("exponential p_c(S = 1) = 0", ex->pc(1, 300), 0, 1e-12);
+    checkRel("exponential p_c(S_e = 1/e) = p_0",
+        ex->pc(Swr + (1 - Swr)/std::exp(1.0), 300), p0, 1e-14);
+}
+
+
 void testLeverettJ()
 {
     section("leverettJ (Udell & Fitch 1985 heat pipe)");
@@ -264,6 +288,14 @@ void testBadInput()
         [](){ model("capillaryPressureModel vanGenuchten;"
             "vanGenuchtenCoeffs { alpha [0 1 0 0 0 0 0] 1e-4; n 2; }"); },
         {"alpha"}, true);
+    checkThrows("exponential p0 = -1",
+        [](){ model("capillaryPressureModel exponential;"
+            "exponentialCoeffs { p0 -1; }"); },
+        {"p0", "-1", "(0, "}, true);
+    checkThrows("exponential at S = Swr (unbounded)",
+        [](){ model("capillaryPressureModel exponential; Swr 0.1;"
+            "exponentialCoeffs { p0 1; }")->pc(0.1, 300); },
+        {"exponential", "unbounded", "(0.1, 1]"});
     checkThrows("BC missing pd",
         [](){ model("capillaryPressureModel brooksCorey;"
             "brooksCoreyCoeffs { lambda 2; }"); },
@@ -329,6 +361,7 @@ int main(int argc, char* argv[])
 
     testVanGenuchten();
     testBrooksCorey();
+    testExponential();
     testLeverettJ();
     testPendular();
     testBadInput();
