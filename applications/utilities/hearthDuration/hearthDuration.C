@@ -96,6 +96,7 @@ Usage
 #include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
+#include "uncertainParameters.H"
 #include "alterationDepth.H"
 #include "levenbergMarquardt.H"
 #include "Tuple2.H"
