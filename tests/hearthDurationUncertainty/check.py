@@ -21,7 +21,7 @@
   the sds 0.05 and 100 and the correlation -0.3) recomputed here from
   sensitivities.csv, within the 6 decimals (h) of result.csv; the printed
   'The fire burned at least ... h (95 %: a-b h)' equals result.csv to its
-  2 decimals.
+  2 decimals; they are the README's example (1.50 h, 95 %: 1.14-1.85 h).
 - bad inputs: FatalIOError with the file and the keyword, no run, no
   crash."""
 import csv
@@ -79,6 +79,11 @@ c.true('printed result = result.csv (2 decimals)',
        and abs(float(m.group(2)) - lo) < 0.0051
        and abs(float(m.group(3)) - hi) < 0.0051,
        m.group(0) if m else 'not found')
+# The figures of the README's example line (2 decimals, half a unit)
+for what, v, printed in (('d*', d0, 1.50), ('lower', lo, 1.14),
+                         ('upper', hi, 1.85)):
+    c.le('README: %s %.5f h = %.2f h' % (what, v, printed), abs(v - printed),
+         0.005)
 c.true('no TMax still rising', 'still rising' not in log)
 
 for line in open('bad.txt'):
