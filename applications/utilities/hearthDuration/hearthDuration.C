@@ -82,6 +82,14 @@ Description
     sensitivities' singular values differ by more than 1e-3 (fitDuration.H).
     tests/hearthDurationFit measures their coverage.
 
+    Uncertainty (sub-dictionary uncertainty, search mode): the soil
+    parameters' standard deviations and correlation
+    (Foam::uncertainParameters) propagated to d* by the implicit-function
+    theorem at the root, d(d*)/dp_j = -(df/dp_j)/(df/dd), var(d*) = g^T C g
+    (first order; central differences, 2n + 2 runs: propagateUncertainty.H);
+    prints "The fire burned at least d h (95 %: a-b h)".
+    tests/hearthDurationUncertainty checks it against full searches.
+
 Usage
     hearthDuration [-duration h] [-case dir]
 
@@ -96,6 +104,7 @@ Usage
 #include "casePaths.H"
 #include "fireHistory.H"
 #include "forwardModel.H"
+#include "uncertainParameters.H"
 #include "alterationDepth.H"
 #include "levenbergMarquardt.H"
 #include "Tuple2.H"
