@@ -38,6 +38,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "gaussLaplacianScheme.H"
+#include "uncorrectedSnGrad.H"
 #include "porousMedium.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
