@@ -933,9 +933,9 @@ FitResult levenbergMarquardt::solve()
                     + str(dGN) + ", below its noise 2 eta |r| = "
                     + str(res.costNoise) + " (model noise eta = "
                     + str(eta) + " per residual from solverNoise "
-                    + str(opts_.solverNoise) + ") and below ("
-                    + str(sdTol) + " standard error)^2 s^2 = "
-                    + str(sdTol*sdTol*s2);
+                    + str(opts_.solverNoise) + "), a step of "
+                    + str(s2 > 0 ? std::sqrt(dGN/s2) : 0.0)
+                    + " standard errors (at most " + str(sdTol) + ")";
                 FitProgress pr;
                 pr.iteration = iter;
                 pr.cost = S;
