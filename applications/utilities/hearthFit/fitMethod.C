@@ -4,6 +4,7 @@
 
 #include "fitMethod.H"
 #include "checkedRead.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
@@ -18,7 +19,8 @@ hearthFit::FitOptions Foam::readFitMethod(const dictionary& fitDict)
             ({
                 "type", "difference", "solverNoise", "relativeStep",
                 "maxIterations", "tolStep", "tolGradient", "tolCost",
-                "initialDamping", "confidence", "jacobianUpdates"
+                "initialDamping", "confidence", "jacobianUpdates",
+                "noiseStop"
             })
         );
     }
@@ -78,6 +80,11 @@ hearthFit::FitOptions Foam::readFitMethod(const dictionary& fitDict)
         opts.tolStep = tolerance("tolStep", 1e-6);
         opts.tolGradient = tolerance("tolGradient", 1e-6);
         opts.tolCost = tolerance("tolCost", 1e-10);
+        // Stop at the model's precision (levenbergMarquardt.H, "Stopping
+        // at the model's precision"): on by default, the noise declared
+        // by solverNoise; noiseStop off leaves the tolerances alone
+        opts.solverNoise =
+            methodDict.getOrDefault<Switch>("noiseStop", true) ? noise : 0;
         opts.maxIterations =
             checkedRead::getLabelOrDefault
             (

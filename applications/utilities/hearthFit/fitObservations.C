@@ -188,6 +188,69 @@ Foam::fitObservations::fitObservations
         t0 = secondsPer[timeUnit]*w[0];
         t1 = secondsPer[timeUnit]*w[1];
     }
+    // Observation groups read from their own file (groups name { file
+    // "..."; sigma s; }): the file's sensor columns joined to the
+    // observations' table; same times (the residuals are times x sensors)
+    // and no sensor in two files
+    const dictionary* groupsDict = obsDict.findDict("groups");
+    std::vector<wordList> fileGroupSensors;
+    std::vector<fileName> colFile(measured.names.size(), path);
+    if (groupsDict)
+    {
+        for (const entry& e : *groupsDict)
+        {
+            fileGroupSensors.push_back(wordList());
+            if (!e.isDict() || !e.dict().found("file")) continue;
+            const dictionary& g = e.dict();
+            const fileName f(g.get<fileName>("file").expand());
+            const fileName gPath(f.isAbsolute() ? f : runTime.path()/f);
+            sensorHistories h;
+            std::string err;
+            if (!readSensorCsv(gPath, h, err, true))
+            {
+                FatalIOErrorInFunction(g)
+                    << "observation group " << e.keyword() << ": file: "
+                    << err.c_str() << exit(FatalIOError);
+            }
+            bool sameTimes = h.times.size() == measured.times.size();
+            for (size_t k = 0; sameTimes && k < h.times.size(); ++k)
+            {
+                const double t = h.times[k]*secondsPer[timeUnit];
+                sameTimes = std::abs(t - measured.times[k])
+                    <= 1e-9*std::max(1.0, std::abs(t));
+            }
+            if (!sameTimes)
+            {
+                FatalIOErrorInFunction(g)
+                    << "observation group " << e.keyword() << ": file "
+                    << gPath << " has other times than " << path << " ("
+                    << h.times.size() << " and " << measured.times.size()
+                    << " rows): every observations file needs the same"
+                    << " time column" << exit(FatalIOError);
+            }
+            for (size_t c = 0; c < h.names.size(); ++c)
+            {
+                const word sn(h.names[c]);
+                const auto it = std::find
+                (
+                    measured.names.begin(), measured.names.end(), sn
+                );
+                if (it != measured.names.end())
+                {
+                    FatalIOErrorInFunction(g)
+                        << "observation group " << e.keyword() << ": file "
+                        << gPath << ": sensor " << sn << " is already in "
+                        << colFile[it - measured.names.begin()]
+                        << " (a sensor belongs to one observations file)"
+                        << exit(FatalIOError);
+                }
+                measured.names.push_back(sn);
+                colFile.push_back(gPath);
+                measured.values.push_back(h.values[c]);
+                fileGroupSensors.back().append(sn);
+            }
+        }
+    }
     if (obsDict.found("sensors"))
     {
         sensors = obsDict.get<wordList>("sensors");
@@ -208,7 +271,6 @@ Foam::fitObservations::fitObservations
         ).value();
     // Observation groups: sensors sharing a noise level
     std::vector<scalar> groupSigma;
-    const dictionary* groupsDict = obsDict.findDict("groups");
     if (obsDict.found("groups") && !groupsDict)
     {
         FatalIOErrorInFunction(obsDict)
@@ -230,7 +292,8 @@ Foam::fitObservations::fitObservations
             const word gName(e.keyword());
             checkedRead::checkKeywords
             (
-                g, wordList({"sensors", "sigma"}), "observation group " + gName
+                g, wordList({"sensors", "sigma", "file"}),
+                "observation group " + gName
             );
             groupSigmaGiven = groupSigmaGiven || g.found("sigma");
             groupSigma.push_back
@@ -241,9 +304,24 @@ Foam::fitObservations::fitObservations
                     checkedRead::positive()
                 ).value()
             );
-            const wordList members(g.get<wordList>("sensors"));
+            // A group with its own file: its sensors (all of the file's,
+            // or those listed, which must be columns of that file)
+            const wordList& inFile = fileGroupSensors[groupNames.size()];
+            const wordList members
+            (
+                g.found("file") && !g.found("sensors") ? inFile
+              : g.get<wordList>("sensors")
+            );
             for (const word& m : members)
             {
+                if (g.found("file") && !inFile.found(m))
+                {
+                    FatalIOErrorInFunction(g)
+                        << "observation group " << gName << ": sensors: "
+                        << m << " is not a column of its file "
+                        << g.get<fileName>("file") << "; its columns: "
+                        << inFile << exit(FatalIOError);
+                }
                 const label si = sensors.find(m);
                 if (si < 0)
                 {
@@ -299,7 +377,8 @@ Foam::fitObservations::fitObservations
         {
             FatalIOErrorInFunction(obsDict)
                 << "sensor " << sensors[si] << " is not a column of "
-                << path << exit(FatalIOError);
+                << path << (colFile.size() > 0 && groupsDict ?
+                    " (nor of a group's file)" : "") << exit(FatalIOError);
         }
         // The sensor's own entry, else its group's, else the default
         const label gi = group[si];

@@ -45,6 +45,7 @@ std::string statusName(FitStatus s)
         case FitStatus::initialEvaluationFailed:
             return "initialEvaluationFailed";
         case FitStatus::jacobianFailed: return "jacobianFailed";
+        case FitStatus::noiseLevel: return "noiseLevel";
         case FitStatus::stalledAtFailures: return "stalledAtFailures";
     }
     return "unknown";
@@ -57,6 +58,7 @@ bool statusConverged(FitStatus s)
         s == FitStatus::gradientTolerance
      || s == FitStatus::stepTolerance
      || s == FitStatus::costTolerance
+     || s == FitStatus::noiseLevel
      || s == FitStatus::zeroResidual;
 }
 
@@ -203,6 +205,18 @@ levenbergMarquardt::levenbergMarquardt
         throw std::invalid_argument
         (
             "levenbergMarquardt: confidence not in (0, 1)"
+        );
+    }
+    if
+    (
+        !(o.solverNoise >= 0 && o.solverNoise < 1)
+     || !(o.noiseStopStdError > 0)
+    )
+    {
+        throw std::invalid_argument
+        (
+            "levenbergMarquardt: need 0 <= solverNoise < 1 and"
+            " noiseStopStdError > 0"
         );
     }
     if (!(o.geodesicAlpha > 0 && o.geodesicStep > 0))
@@ -885,6 +899,56 @@ FitResult levenbergMarquardt::solve()
             }
             return Vector(Jf.colPivHouseholderQr().solve(rhs));
         };
+
+        // Stop at the model's precision (see the header): the undamped
+        // Gauss-Newton decrease left, against the cost's noise 2 eta |r|
+        // and a fraction of a standard error; on finite differences only
+        if (opts_.solverNoise > 0 && !broyden && nf > 0)
+        {
+            double eta = inf;
+            for (int j = 0; j < n_; ++j)
+            {
+                const double scale =
+                    params_[j].transform == Transform::log
+                  ? std::abs(p(j))
+                  : std::max(std::abs(p(j)), typical_(j));
+                eta = std::min
+                (
+                    eta, opts_.solverNoise*scale*Jp.col(j).cwiseAbs().maxCoeff()
+                );
+            }
+            const Vector xgn = dampedSolve(-r, 0);
+            const double dGN = std::max(0.0, S - (r + Jf*xgn).squaredNorm());
+            const double s2 =
+                opts_.knownSigma ? 1.0
+              : m > n_ ? S/double(m - n_) : 0.0;
+            const double sdTol = opts_.noiseStopStdError;
+            res.modelNoise = eta;
+            res.costNoise = 2*eta*std::sqrt(S);
+            res.gaussNewtonDecrease = dGN;
+            if (dGN <= res.costNoise && dGN <= sdTol*sdTol*s2)
+            {
+                status = FitStatus::noiseLevel;
+                detail = "the Gauss-Newton step left would lower the cost by "
+                    + str(dGN) + ", below its noise 2 eta |r| = "
+                    + str(res.costNoise) + " (model noise eta = "
+                    + str(eta) + " per residual from solverNoise "
+                    + str(opts_.solverNoise) + "), a step of "
+                    + str(s2 > 0 ? std::sqrt(dGN/s2) : 0.0)
+                    + " standard errors (at most " + str(sdTol) + ")";
+                FitProgress pr;
+                pr.iteration = iter;
+                pr.cost = S;
+                pr.parameters = p;
+                pr.damping = lambda;
+                pr.evaluations = evaluations_;
+                pr.failedEvaluations = failed_;
+                pr.batches = batches_;
+                pr.event = "stop: " + statusName(status);
+                report(pr);
+                break;
+            }
+        }
 
         int rejected = 0;
         const long failedBefore = failed_;
