@@ -27,7 +27,8 @@ print('  %-22s %8s %6s %6s %7s %6s  %s' % ('run', 'CPU [s]', 'steps', 'rej.', 'i
                                            '1 h | 3 h | 12 h'))
 for case, N, refN, runs in (
         ('column100', 100, 200, ('segregated', 'newton')),
-        ('column500', 500, 500, ('segregated', 'newton', 'newton_dT1', 'newton_dT4'))):
+        ('column500', 500, 500, ('segregated', 'newton', 'newton_dT1', 'newton_dT4', 'bdf2_tol0.03',
+                               'bdf2_tol0.1', 'bdf2_tol0.3', 'bdf2_tol1'))):
     depth = [H - (i + 0.5)*H/N for i in range(N)]
     for engine in runs:
         d = os.path.join(work, '%s_%s' % (case, engine))

@@ -62,6 +62,7 @@ Description
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
 #include "subStepController.H"
+#include "variableStepBdf2.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"
 #include "upwind.H"

@@ -42,6 +42,7 @@ Foam::pendularResidual::pendularResidual
     W0_(fvMesh_.nCells()),
     A0_(fvMesh_.nCells()),
     E0_(fvMesh_.nCells()),
+    a0_(1),
     alphaGuess_(alphaGuess),
     cache_(fvMesh_.nCells()),
     cacheNext_(fvMesh_.nCells(), Zero),
@@ -98,6 +99,29 @@ Foam::pendularResidual::pendularResidual
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::pendularResidual::bdf2
+(
+    const scalar a0,
+    const scalar a1,
+    const scalar a2,
+    const scalarField& Wold,
+    const scalarField& Aold,
+    const scalarField& Eold,
+    const scalarField& WOlder,
+    const scalarField& AOlder,
+    const scalarField& EOlder
+)
+{
+    a0_ = a0;
+    forAll(W0_, celli)
+    {
+        W0_[celli] = a1*Wold[celli] - a2*WOlder[celli];
+        A0_[celli] = a1*Aold[celli] - a2*AOlder[celli];
+        E0_[celli] = a1*Eold[celli] - a2*EOlder[celli];
+    }
+}
+
 
 Foam::tmp<Foam::scalarField> Foam::pendularResidual::pack
 (
@@ -262,12 +286,12 @@ void Foam::pendularResidual::scales
         const scalar phi = medium_.porosity()[celli];
         const cellState s = state(celli, &x[3*celli]);
         const scalar pa = s.pa;
-        water[celli] = V[celli]/dt_;
+        water[celli] = a0_*V[celli]/dt_;
         gas[celli] =
-            V[celli]*phi*(1 - s.alpha)*medium_.Ma()
+            a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
            /(medium_.R()*s.T*dt_);
         energy[celli] =
-            V[celli]
+            a0_*V[celli]
            *medium_.energyCapacity
             (
                 medium_.saturation(s.T), s.W, s.alpha, pa, phi
@@ -285,9 +309,9 @@ void Foam::pendularResidual::cellTerm
 {
     const cellState s = state(celli, x);
     const scalar VByDt = fvMesh_.V()[celli]/dt_;
-    S[0] = VByDt*(s.W - W0_[celli]);
-    S[1] = VByDt*(s.A - A0_[celli]);
-    S[2] = VByDt*(s.E - E0_[celli]);
+    S[0] = VByDt*(a0_*s.W - W0_[celli]);
+    S[1] = VByDt*(a0_*s.A - A0_[celli]);
+    S[2] = VByDt*(a0_*s.E - E0_[celli]);
 }
 
 

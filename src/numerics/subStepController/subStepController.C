@@ -19,6 +19,7 @@ Foam::subStepController::subStepController
     lastDeltaT_(deltaT0),
     lastMaxChange_(0),
     lastIterations_(0),
+    nextStepFactor_(GREAT),
     DeltaT_(deltaT0),
     elapsed_(0),
     dt_(deltaT0),
@@ -37,6 +38,15 @@ void Foam::subStepController::setDeltaT(Time& runTime) const
     (
         runTime, lastDeltaT_, lastMaxChange_, lastIterations_
     );
+    if
+    (
+        nextStepFactor_ < GREAT && controls_.adjustTimeStep()
+     && runTime.timeIndex() > runTime.startTimeIndex()
+     && runTime.deltaTValue() > nextStepFactor_*lastDeltaT_
+    )
+    {
+        runTime.setDeltaT(nextStepFactor_*lastDeltaT_);
+    }
 }
 
 
@@ -75,6 +85,14 @@ void Foam::subStepController::accept
     ++nSubSteps_;
     lastDeltaT_ = dt_;
     lastIterations_ = iter;
+}
+
+
+void Foam::subStepController::limitNextStep(const scalar factor)
+{
+    nextStepFactor_ = factor;
+    // The remaining sub-steps of this step too
+    dt_ = min(dt_, factor*lastDeltaT_);
 }
 
 
