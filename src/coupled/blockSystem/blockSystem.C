@@ -9,6 +9,8 @@
 #include "cyclicPolyPatch.H"
 #include "checkedRead.H"
 #include <petscksp.h>
+#include <cfenv>
+#include <cmath>
 #include <sstream>
 #include <type_traits>
 
@@ -455,6 +457,7 @@ Foam::blockSystem::blockSystem
     ksp_(nullptr),
     solverName_(),
     prefix_(),
+    failure_(),
     faceValues_(4*nBlock*nBlock)
 {
     petscSession::checkActive("blockSystem");
@@ -619,7 +622,21 @@ Foam::solverPerformance Foam::blockSystem::solve
     std::copy(x.cbegin(), x.cend(), p);
     petscSession::check(VecRestoreArray(x_, &p), "VecRestoreArray");
 
-    petscSession::check(KSPSolve(ksp_, b_, x_), "KSPSolve");
+    // PETSc's kernels run with the floating-point traps that OpenFOAM
+    // sets (FOAM_SIGFPE) held: PETSc expects non-trapping arithmetic (it
+    // installs no trap itself unless asked, -fp_trap) and detects a failed
+    // factorisation after the fact (a zero pivot of a block, or an
+    // overflowing or NaN block: PetscKernel_A_gets_inverse_A_3 of the
+    // block ILU overflowed, SIGFPE, before this), reporting it as
+    // KSP_DIVERGED_PC_FAILED or KSP_DIVERGED_NANORINF. The flags raised
+    // inside are discarded with the environment restored (fesetenv, not
+    // feupdateenv, which would raise them again under the traps); a
+    // non-finite solution is caught below
+    std::fenv_t fpEnv;
+    std::feholdexcept(&fpEnv);
+    const PetscErrorCode ierr = KSPSolve(ksp_, b_, x_);
+    std::fesetenv(&fpEnv);
+    petscSession::check(ierr, "KSPSolve");
 
     KSPConvergedReason reason;
     PetscInt nIter;
@@ -641,18 +658,64 @@ Foam::solverPerformance Foam::blockSystem::solve
     std::copy(q, q + x.size(), x.begin());
     petscSession::check(VecRestoreArrayRead(x_, &q), "VecRestoreArrayRead");
 
-    const bool converged = reason > 0;
+    // A solution with a NaN or an infinity (on any rank) is no solution,
+    // whatever PETSc's reason
+    bool finite = true;
+    for (const scalar xi : x)
+    {
+        if (!std::isfinite(xi))
+        {
+            finite = false;
+            break;
+        }
+    }
+    reduce(finite, andOp<bool>());
+
+    const char* reasonText = nullptr;
+    KSPGetConvergedReasonString(ksp_, &reasonText);
+    failure_.clear();
+    if (!finite)
+    {
+        failure_ =
+            std::string("a non-finite solution (KSPConvergedReason ")
+          + (reasonText ? reasonText : "?") + ")";
+    }
+    else if (reason < 0 && reason != KSP_DIVERGED_ITS)
+    {
+        // A breakdown (PC_FAILED: a zero pivot or a non-finite block of
+        // the factorisation; NANORINF; BREAKDOWN; ...), not a solve short
+        // of its tolerance
+        failure_ =
+            std::string(reasonText ? reasonText : "?")
+          + " (KSPConvergedReason " + std::to_string(int(reason)) + ")";
+        if (reason == KSP_DIVERGED_PC_FAILED)
+        {
+            PC pc;
+            PCFailedReason pcReason = PC_NOERROR;
+            if
+            (
+                KSPGetPC(ksp_, &pc) == 0
+             && PCGetFailedReasonRank(pc, &pcReason) == 0
+             && pcReason != PC_NOERROR
+            )
+            {
+                failure_ +=
+                    std::string(": ") + PCFailedReasons[pcReason];
+            }
+        }
+    }
+
+    const bool converged = reason > 0 && finite;
     if (!converged && failOnDivergence)
     {
-        const char* reasonText = nullptr;
-        KSPGetConvergedReasonString(ksp_, &reasonText);
         PetscReal rtol, abstol, dtol;
         PetscInt maxits;
         KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &maxits);
         FatalErrorInFunction
             << "The block solver " << solverName_ << " (" << nBlock_
             << " unknowns per cell, " << globalCells_.size() << " cells)"
-            << " did not converge: " << (reasonText ? reasonText : "?")
+            << " did not converge: "
+            << (failure_.empty() ? (reasonText ? reasonText : "?") : failure_)
             << " (KSPConvergedReason " << int(reason) << ") after "
             << nIter << " iterations; residual " << initialResidual
             << " -> " << finalResidual << ", asked tolerance " << abstol
@@ -672,7 +735,7 @@ Foam::solverPerformance Foam::blockSystem::solve
         finalResidual,
         label(nIter),
         converged,
-        false
+        !failure_.empty()
     );
 }
 

@@ -290,6 +290,19 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // floor near convergence, is still a descent step: the
         // convergence test above judges the iterate, not the step)
         const solverPerformance perf = system_.solve(dx, false);
+        if (!system_.failure().empty())
+        {
+            // No Newton step: the sub-step ends unconverged at the last
+            // iterate (still valid), to be rejected and retried shorter
+            out.linearFailure = system_.failure();
+            out.iterations = iter + 1;
+            if (verbose_)
+            {
+                Info<< "    Newton " << iter << ": the linear solve broke"
+                    << " down: " << out.linearFailure.c_str() << endl;
+            }
+            return out;
+        }
         if (verbose_ && !perf.converged())
         {
             Info<< "    Newton " << iter << ": linear solver stopped at "

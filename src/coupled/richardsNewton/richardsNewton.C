@@ -73,6 +73,12 @@ Foam::richardsNewton::result Foam::richardsNewton::solve
         res.jacobian(S, system_);
         dS = Zero;
         system_.solve(dS, false);
+        if (!system_.failure().empty())
+        {
+            // No Newton step (e.g. a failed factorisation): unconverged
+            out.iterations = iter + 1;
+            return out;
+        }
 
         scalar u = 0;
         nChopped = 0;

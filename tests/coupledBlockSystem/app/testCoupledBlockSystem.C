@@ -28,7 +28,10 @@ Description
        log(r_k+1/r_k)/log(r_k/r_k-1) at least 1.8 over the last step above
        the round-off floor (1e-10 of |R_0|), |R| below 1e-12 |R_0| in at
        most 8 iterations; the same with the Jacobian of the first iteration
-       kept (a plausible wrong Jacobian) converges at first order only.
+       kept (a plausible wrong Jacobian) converges at first order only;
+    4. a block preconditioner whose factorisation fails (a singular, an
+       overflowing and a NaN 3x3 block, under OpenFOAM's floating-point
+       traps): the solve ends unconverged with the reason, no SIGFPE.
 
     Writes blockU0..2 (1.) and newtonU0..2 (3.) for the serial = parallel
     comparison of the test script. Options: -diverge (the linear solve
@@ -336,6 +339,75 @@ void newtonChecks(const fvMesh& mesh, const diffusionTestProblem& problem)
 }
 
 
+//- 4. A linear solve that breaks down is reported, not a crash: block
+//  Jacobi with ILU (the default of blockSystem and pendularFoam) on a
+//  block-diagonal matrix, the identity but for cell 0's 3x3 block, which
+//  is (a) singular (a zero water row and column: a zero pivot), (b) one
+//  whose inverse overflows ((1e-200, 1e200; 0, 1) in the water-gas
+//  corner: an inverse entry of 1e400), (c) NaN in one entry; under
+//  OpenFOAM's floating-point traps (FOAM_SIGFPE, on in the tests), PETSc's
+//  block inversion (PetscKernel_A_gets_inverse_A_3 of MatLUFactorNumeric)
+//  raised SIGFPE on (b) and (c) before blockSystem held the traps around
+//  KSPSolve. Each must end unconverged with failure() naming PETSc's
+//  reason, and a good solve after it on the same system must converge
+void breakdownChecks(const fvMesh& mesh)
+{
+    section("4. broken-down linear solves (singular, overflowing, NaN block)");
+    const dictionary& dict = mesh.solutionDict().subDict("coupled");
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    const List<std::pair<const char*, FixedList<scalar, 9>>> blocks
+    ({
+        {"singular block", {0, 0, 0, 0, 1, 0, 0, 0, 1}},
+        {"overflowing inverse", {1e-200, 1e200, 0, 0, 1, 0, 0, 0, 1}},
+        {"NaN block", {nan, 0, 0, 0, 1, 0, 0, 0, 1}}
+    });
+    blockSystem sys(mesh, 3, dict);
+    scalarSquareMatrix I(3, Zero);
+    for (label k = 0; k < 3; ++k)
+    {
+        I(k, k) = 1;
+    }
+    auto assemble = [&](const FixedList<scalar, 9>* cell0)
+    {
+        sys.clear();
+        for (label c = 0; c < mesh.nCells(); ++c)
+        {
+            scalarSquareMatrix D(I);
+            if (c == 0 && cell0 && Pstream::master())
+            {
+                std::copy(cell0->cbegin(), cell0->cend(), D.data());
+            }
+            sys.addDiag(c, D);
+        }
+        sys.source() = 1;
+        sys.assemble();
+    };
+    for (const auto& b : blocks)
+    {
+        assemble(&b.second);
+        scalarField x(3*mesh.nCells(), Zero);
+        const solverPerformance perf = sys.solve(x, false);
+        Info<< b.first << ": " << sys.failure().c_str() << endl;
+        checkTrue
+        (
+            fmt("%s: solve not converged, breakdown reported", b.first),
+            !perf.converged() && perf.singular() && !sys.failure().empty(),
+            perf.converged(), 0, "=="
+        );
+    }
+    assemble(nullptr);
+    scalarField x(3*mesh.nCells(), Zero);
+    const solverPerformance perf = sys.solve(x, false);
+    checkTrue
+    (
+        "after them, the identity: converged, x = 1",
+        perf.converged() && sys.failure().empty()
+     && gMaxMag(x - 1.0) < 1e-12,
+        gMaxMag(x - 1.0), 1e-12, "<"
+    );
+}
+
+
 //- Newton alone, timed (bench/coupledBlock): the cost per iteration and
 //  cell of the Jacobian assembly and of the linear solve
 void newtonCostOnly(const fvMesh& mesh, const diffusionTestProblem& problem)
@@ -429,6 +501,7 @@ int main(int argc, char *argv[])
             const diffusionTestProblem problem(mesh, props);
             jacobianCheck(mesh, problem);
             newtonChecks(mesh, problem);
+            breakdownChecks(mesh);
         }
     }
 
