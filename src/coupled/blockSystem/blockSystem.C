@@ -380,10 +380,29 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
             break;
     }
 
+    createKsp(relTol, tolerance, maxIter);
+
+    KSPType kspType;
+    PC pcObj;
+    PCType pcType;
+    petscSession::check(KSPGetType(ksp_, &kspType), "KSPGetType");
+    petscSession::check(KSPGetPC(ksp_, &pcObj), "KSPGetPC");
+    petscSession::check(PCGetType(pcObj, &pcType), "PCGetType");
+    solverName_ = word(std::string("PETSc-") + kspType + "-" + pcType);
+}
+
+
+void Foam::blockSystem::createKsp
+(
+    const scalar relTol,
+    const scalar tolerance,
+    const label maxIter
+) const
+{
     petscSession::check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
     petscSession::check
     (
-        KSPSetOptionsPrefix(ksp_, prefix.c_str()),
+        KSPSetOptionsPrefix(ksp_, prefix_.c_str()),
         "KSPSetOptionsPrefix"
     );
     petscSession::check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
@@ -393,14 +412,6 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
         "KSPSetTolerances"
     );
     petscSession::check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
-
-    KSPType kspType;
-    PC pcObj;
-    PCType pcType;
-    petscSession::check(KSPGetType(ksp_, &kspType), "KSPGetType");
-    petscSession::check(KSPGetPC(ksp_, &pcObj), "KSPGetPC");
-    petscSession::check(PCGetType(pcObj, &pcType), "PCGetType");
-    solverName_ = word(std::string("PETSc-") + kspType + "-" + pcType);
 }
 
 
@@ -703,6 +714,23 @@ Foam::solverPerformance Foam::blockSystem::solve
                     std::string(": ") + PCFailedReasons[pcReason];
             }
         }
+    }
+
+    if (!failure_.empty())
+    {
+        // A failed preconditioner keeps its state (measured: fieldsplit
+        // returned inf on the next, regular system; KSPReset of fieldsplit
+        // ends in a segmentation fault in PETSc 3.18): a new solver for
+        // the next solve
+        PetscReal rtol, abstol, dtol;
+        PetscInt maxits;
+        petscSession::check
+        (
+            KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &maxits),
+            "KSPGetTolerances"
+        );
+        petscSession::check(KSPDestroy(&ksp_), "KSPDestroy");
+        createKsp(rtol, abstol, maxits);
     }
 
     const bool converged = reason > 0 && finite;

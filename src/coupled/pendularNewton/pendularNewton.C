@@ -215,6 +215,8 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     // The last two updates (in units of the tolerances)
     FixedList<scalar, 3> uPrev(GREAT);
     label nModifiedPrev = 1;
+    // The first iterate's largest scaled residual (divergence test)
+    scalar rFirst = GREAT;
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
@@ -278,6 +280,19 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             out.converged = true;
             return out;
         }
+        if (iter == 0)
+        {
+            rFirst = rMax;
+        }
+        else if (rMax > divergenceFactor_*rFirst)
+        {
+            out.failure =
+                "the Newton iterations diverged: largest scaled residual "
+              + Foam::name(rMax) + " tolerances > "
+              + Foam::name(divergenceFactor_) + " times the first iterate's "
+              + Foam::name(rFirst);
+            return out;
+        }
         if (iter == maxIter_)
         {
             return out;
@@ -294,12 +309,14 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         {
             // No Newton step: the sub-step ends unconverged at the last
             // iterate (still valid), to be rejected and retried shorter
-            out.linearFailure = system_.failure();
+            out.failure =
+                "the linear solve of a Newton step broke down: "
+              + system_.failure();
             out.iterations = iter + 1;
             if (verbose_)
             {
-                Info<< "    Newton " << iter << ": the linear solve broke"
-                    << " down: " << out.linearFailure.c_str() << endl;
+                Info<< "    Newton " << iter << ": "
+                    << out.failure.c_str() << endl;
             }
             return out;
         }
