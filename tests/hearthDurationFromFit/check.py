@@ -16,7 +16,9 @@
   result.csv; the correlation counts (the uncorrelated sd printed as the
   plausible wrong one differs by more than 5 %).
 - bad inputs: FatalIOError with the file and the keyword, no run, no
-  crash."""
+  crash.
+- the README's figures: sd 0.00040 h, 0.17 h without the correlation
+  (over 400-fold), correlation 0.99999 (half a unit of the printed digit)."""
 import csv
 import math
 import re
@@ -95,6 +97,14 @@ c.le('|sd %.8f h - sqrt(g^T C g)| [h] (C from posterior.dict)' % sdh,
 unc = math.sqrt(g[0]**2 + g[1]**2)
 c.true('the correlation counts: sd without it differs by > 5 %',
        abs(unc/sdh - 1) > 0.05, 'sd %.5f h, uncorrelated %.5f h' % (sdh, unc))
+
+# The README's figures (printed digits, half a unit)
+c.le('README: sd %.6f h = 0.00040 h' % sdh, abs(sdh - 0.00040), 5e-6)
+c.le('README: uncorrelated sd %.4f h = 0.17 h' % unc, abs(unc - 0.17), 0.005)
+c.le('README: correlation %.7f = 0.99999' % R[0][1], abs(R[0][1] - 0.99999),
+     5e-6)
+c.true('README: over 400-fold without the correlation', unc/sdh > 400,
+       '%.0f' % (unc/sdh))
 
 for line in open('bad.txt'):
     name, status, key, crash = line.strip().split('|')
