@@ -89,6 +89,9 @@ Description
     (first order; central differences, 2n + 2 runs: propagateUncertainty.H);
     prints "The fire burned at least d h (95 %: a-b h)".
     tests/hearthDurationUncertainty checks it against full searches.
+    The parameters, sds and correlation are written in the sub-dictionary
+    or read from hearthFit's posterior (fitPosterior "<posterior.dict>";
+    tests/hearthDurationFromFit).
 
 Usage
     hearthDuration [-duration h] [-case dir]

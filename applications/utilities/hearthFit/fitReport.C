@@ -199,6 +199,100 @@ void Foam::fitReport::progress(const hearthFit::FitProgress& pr)
 }
 
 
+void Foam::fitReport::writePosteriorDict
+(
+    const hearthFit::FitResult& res
+) const
+{
+    const fileName file(fwd_.workDir/"posterior.dict");
+    rm(file);
+
+    // The parameters of a case dictionary (not the sensor offsets,
+    // displacements and the fire's)
+    std::vector<label> js;
+    std::string left;
+    for (label j = 0; j < params_.size(); ++j)
+    {
+        const ParameterSpec& s = params_.specs[j];
+        if (s.component >= 0 || s.fireIndex >= 0 || s.group >= 0)
+        {
+            left += ' ' + s.name;
+        }
+        else
+        {
+            js.push_back(j);
+        }
+    }
+    if (js.empty())
+    {
+        return;
+    }
+    for (const label j : js)
+    {
+        const bool ok =
+            res.standardErrors.size() > j
+         && std::isfinite(res.standardErrors(j))
+         && res.standardErrors(j) > 0
+         && res.correlation.rows() > j;
+        if (!ok)
+        {
+            Info<< "No " << file << ": parameter " << params_.specs[j].name
+                << " has no finite, positive standard error" << endl;
+            return;
+        }
+    }
+
+    std::ofstream os(file);
+    os  << std::setprecision(17)
+        << "FoamFile\n{\n    version     2.0;\n    format      ascii;\n"
+        << "    class       dictionary;\n    object      posterior;\n}\n"
+        << "// hearthFit's posterior (first order): the fitted parameters as"
+        << " written into the\n// case (value = scale x estimate, sd = |scale|"
+        << " x standard error) and their\n// correlation; status "
+        << hearthFit::statusName(res.status)
+        << (res.converged ? " (converged)" : " (NOT converged)") << ", "
+        << (res.knownSigma ? "sigma given" : "scaled by s^2") << ", s^2 "
+        << res.sigma2 << ", dof " << res.dof << ".\n"
+        << "// For hearthDuration: uncertainty { fitPosterior \"<this file>\"; }"
+        << "\n";
+    if (!left.empty())
+    {
+        os << "// Left out (not an entry of a case file):" << left
+           << "; their uncertainty is not propagated\n";
+    }
+    os << "\nparameters\n{\n";
+    for (const label j : js)
+    {
+        const ParameterSpec& s = params_.specs[j];
+        os  << "    " << s.name << "\n    {\n"
+            << "        file    \"" << s.file.c_str() << "\";\n"
+            << "        entry   \"" << s.entry.c_str() << "\";\n"
+            << "        value   " << s.scale*res.parameters(j) << ";\n"
+            << "        sd      " << mag(s.scale)*res.standardErrors(j)
+            << ";\n    }\n";
+    }
+    os << "}\n\n// In the order of the parameters: symmetric, unit diagonal"
+       << "\ncorrelation\n(\n";
+    for (const label i : js)
+    {
+        os << "    (";
+        for (const label j : js)
+        {
+            // A scale < 0 flips the sign of its rows and columns
+            const scalar flip =
+                sign(params_.specs[i].scale)*sign(params_.specs[j].scale);
+            os  << (j == js[0] ? "" : " ")
+                << (
+                       i == j ? 1
+                     : flip*0.5*(res.correlation(i, j) + res.correlation(j, i))
+                   );
+        }
+        os << ")\n";
+    }
+    os << ");\n";
+}
+
+
 void Foam::fitReport::write
 (
     const hearthFit::FitResult& res,
@@ -383,9 +477,16 @@ void Foam::fitReport::write
     {
         g->write(res, fwd_.workDir, &g == &params_.displacements[0]);
     }
+    writePosteriorDict(res);
     Info<< "Written " << fwd_.workDir/"report.txt" << ", "
         << fwd_.workDir/"fitted.csv" << ", " << fwd_.workDir/"parameters.csv" << ", "
         << fwd_.workDir/"progress.csv" << endl;
+    if (isFile(fwd_.workDir/"posterior.dict"))
+    {
+        Info<< "Written " << fwd_.workDir/"posterior.dict"
+            << " (for hearthDuration's uncertainty { fitPosterior ...; })"
+            << endl;
+    }
 
     // Scaled sensitivities p_j dT/dp_j [C] from the final Jacobian
     // (dr/dp with r = sqrt(w)(T - m)/sigma: dT/dp = J sigma/sqrt(w))

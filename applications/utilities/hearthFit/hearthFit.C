@@ -31,8 +31,10 @@ Description
     log, missing sensors CSV or a CSV not covering the time window) is a
     failed evaluation: the optimiser rejects the step.  The user's case is
     only read; results go to <workDir> (report.txt, fitted.csv,
-    progress.csv, sensitivities.csv: the scaled sensitivities
-    p_j dT/dp_j [C] per sensor from the final Jacobian, and with gnuplot
+    progress.csv, parameters.csv, posterior.dict (the estimates of
+    case-file parameters with sds and correlation, for hearthDuration's
+    uncertainty { fitPosterior ...; }), sensitivities.csv: the scaled
+    sensitivities p_j dT/dp_j [C] per sensor from the final Jacobian, and with gnuplot
     fitted.png and sensitivities.png, script plots.gp; state.dict: the
     fit state after each accepted iteration, from which -resume restarts
     an interrupted fit, appending to progress.csv); scratch copies are

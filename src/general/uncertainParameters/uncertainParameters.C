@@ -11,42 +11,14 @@
 #include <Eigen/Dense>
 #include <gsl/gsl_cdf.h>
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::uncertainParameters::uncertainParameters
+void Foam::uncertainParameters::readParameters
 (
-    const dictionary& dict,
-    const fileName& casePath
+    const dictionary& parsDict,
+    const bool fromFit
 )
-:
-    casePath_(casePath),
-    names_(),
-    files_(),
-    entries_(),
-    values_(),
-    sds_(),
-    correlation_(),
-    confidence_(0.95),
-    stepFraction_(1),
-    caseDicts_()
 {
-    checkedRead::checkKeywords
-    (
-        dict,
-        wordList({"parameters", "correlation", "confidence", "stepFraction"}),
-        "uncertainty"
-    );
-
-    if (!dict.isDict("parameters"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "uncertainty: missing sub-dictionary 'parameters' (name"
-            << " { file <relative to the case>; entry <keyword path>;"
-            << " sd <standard deviation>; } entries)" << nl
-            << exit(FatalIOError);
-    }
-    const dictionary& parsDict = dict.subDict("parameters");
-
     DynamicList<scalar> values;
     DynamicList<scalar> sds;
     for (const entry& e : parsDict)
@@ -63,7 +35,11 @@ Foam::uncertainParameters::uncertainParameters
         const word name(e.keyword());
         checkedRead::checkKeywords
         (
-            d, wordList({"file", "entry", "sd"}), "uncertain parameter " + name
+            d,
+            fromFit
+          ? wordList({"file", "entry", "value", "sd"})
+          : wordList({"file", "entry", "sd"}),
+            "uncertain parameter " + name
         );
 
         fileName file(d.get<fileName>("file"));
@@ -93,12 +69,12 @@ Foam::uncertainParameters::uncertainParameters
 
         if (!caseDicts_.found(file))
         {
-            IFstream is(casePath/file);
+            IFstream is(casePath_/file);
             if (!is.good())
             {
                 FatalIOErrorInFunction(d)
                     << "uncertain parameter " << name << ": keyword 'file':"
-                    << " cannot read " << casePath/file << nl
+                    << " cannot read " << casePath_/file << nl
                     << exit(FatalIOError);
             }
             dictionary cd(is);
@@ -115,7 +91,7 @@ Foam::uncertainParameters::uncertainParameters
                 << "uncertain parameter " << name << ": keyword 'entry' = "
                 << entryPath.c_str() << ": no such keyword path (of a"
                 << " number; '/' between sub-dictionaries) in "
-                << casePath/file << nl
+                << casePath_/file << nl
                 << exit(FatalIOError);
         }
         checkedRead::checkNumbers
@@ -128,19 +104,40 @@ Foam::uncertainParameters::uncertainParameters
         {
             FatalIOErrorInFunction(*parent)
                 << "uncertain parameter " << name << ": the entry '"
-                << entryPath.c_str() << "' of " << casePath/file << " is "
+                << entryPath.c_str() << "' of " << casePath_/file << " is "
                 << is.size() << " tokens: expected a single number" << nl
                 << exit(FatalIOError);
         }
+        const scalar value = parent->get<scalar>(key);
+        const scalar sd =
+            checkedRead::get(d, "sd", dimless, checkedRead::positive())
+           .value();
+
+        // The fit's estimate must be the case's value (to 1e-3 sd): the
+        // propagation linearises about the case's value
+        if (fromFit)
+        {
+            checkedRead::checkNumbers(d, "value", "a number (the estimate)");
+            const scalar estimate = d.get<scalar>("value");
+            if (mag(value - estimate) > 1e-3*sd)
+            {
+                FatalIOErrorInFunction(d)
+                    << "uncertain parameter " << name << ": keyword 'value'"
+                    << " = " << estimate << " (the fit's estimate) differs"
+                    << " from the case's " << entryPath.c_str() << " = "
+                    << value << " in " << casePath_/file << " by more than"
+                    << " 1e-3 sd (" << 1e-3*sd << "): the fit's covariance"
+                    << " holds about its estimates; write them into the"
+                    << " case (hearthFit -writeCase DIR)" << nl
+                    << exit(FatalIOError);
+            }
+        }
+
         names_.append(name);
         files_.append(file);
         entries_.append(entryPath);
-        values.append(parent->get<scalar>(key));
-        sds.append
-        (
-            checkedRead::get(d, "sd", dimless, checkedRead::positive())
-           .value()
-        );
+        values.append(value);
+        sds.append(sd);
     }
     if (names_.empty())
     {
@@ -151,77 +148,176 @@ Foam::uncertainParameters::uncertainParameters
     }
     values_.transfer(values);
     sds_.transfer(sds);
+}
 
+
+void Foam::uncertainParameters::readCorrelation(const dictionary& dict)
+{
     const label n = names_.size();
     correlation_ = scalarSquareMatrix(n, Zero);
     for (label i = 0; i < n; ++i)
     {
         correlation_(i, i) = 1;
     }
-    if (dict.found("correlation"))
+    if (!dict.found("correlation"))
     {
-        checkedRead::checkNumbers
-        (
-            dict, "correlation",
-            "the correlation matrix ((1 r12 ...) (r12 1 ...) ...) in the"
-            " order of the parameters"
-        );
-        const List<scalarList> rows(dict.get<List<scalarList>>("correlation"));
-        bool square = rows.size() == n;
-        for (const scalarList& row : rows)
-        {
-            square = square && row.size() == n;
-        }
-        if (!square)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword 'correlation': expected a " << n << " x " << n
-                << " matrix (one row per parameter, in the order "
-                << names_ << ")" << nl << exit(FatalIOError);
-        }
-        for (label i = 0; i < n; ++i)
-        {
-            for (label j = 0; j < n; ++j)
-            {
-                const scalar r = rows[i][j];
-                if
-                (
-                    (i == j && r != 1)
-                 || mag(r - rows[j][i]) > 1e-12
-                 || mag(r) > 1
-                )
-                {
-                    FatalIOErrorInFunction(dict)
-                        << "Keyword 'correlation': element (" << i + 1 << ", "
-                        << j + 1 << ") = " << r << ": expected a symmetric"
-                        << " matrix with 1 on its diagonal and elements in"
-                        << " [-1, 1] (parameters " << names_ << ")" << nl
-                        << exit(FatalIOError);
-                }
-                correlation_(i, j) = r;
-            }
-        }
+        return;
+    }
 
-        Eigen::MatrixXd R(n, n);
-        for (label i = 0; i < n; ++i)
+    checkedRead::checkNumbers
+    (
+        dict, "correlation",
+        "the correlation matrix ((1 r12 ...) (r12 1 ...) ...) in the"
+        " order of the parameters"
+    );
+    const List<scalarList> rows(dict.get<List<scalarList>>("correlation"));
+    bool square = rows.size() == n;
+    for (const scalarList& row : rows)
+    {
+        square = square && row.size() == n;
+    }
+    if (!square)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'correlation': expected a " << n << " x " << n
+            << " matrix (one row per parameter, in the order "
+            << names_ << ")" << nl << exit(FatalIOError);
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
         {
-            for (label j = 0; j < n; ++j)
-            {
-                R(i, j) = correlation_(i, j);
-            }
-        }
-        const scalar minEigen =
-            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>
+            const scalar r = rows[i][j];
+            if
             (
-                R, Eigen::EigenvaluesOnly
-            ).eigenvalues().minCoeff();
-        if (minEigen < -1e-12)
+                (i == j && r != 1)
+             || mag(r - rows[j][i]) > 1e-12
+             || mag(r) > 1
+            )
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword 'correlation': element (" << i + 1 << ", "
+                    << j + 1 << ") = " << r << ": expected a symmetric"
+                    << " matrix with 1 on its diagonal and elements in"
+                    << " [-1, 1] (parameters " << names_ << ")" << nl
+                    << exit(FatalIOError);
+            }
+            correlation_(i, j) = r;
+        }
+    }
+
+    Eigen::MatrixXd R(n, n);
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            R(i, j) = correlation_(i, j);
+        }
+    }
+    const scalar minEigen =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>
+        (
+            R, Eigen::EigenvaluesOnly
+        ).eigenvalues().minCoeff();
+    if (minEigen < -1e-12)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'correlation': not positive semi-definite"
+            << " (smallest eigenvalue " << minEigen << " < 0): not a"
+            << " correlation matrix" << nl << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::uncertainParameters::uncertainParameters
+(
+    const dictionary& dict,
+    const fileName& casePath
+)
+:
+    casePath_(casePath),
+    names_(),
+    files_(),
+    entries_(),
+    values_(),
+    sds_(),
+    correlation_(),
+    confidence_(0.95),
+    stepFraction_(1),
+    caseDicts_()
+{
+    const bool fromFit = dict.found("fitPosterior");
+    if (fromFit && (dict.found("parameters") || dict.found("correlation")))
+    {
+        FatalIOErrorInFunction(dict)
+            << "uncertainty: keyword 'fitPosterior' (the parameters and"
+            << " their correlation from a hearthFit posterior file) or"
+            << " keywords 'parameters' and 'correlation' (written here),"
+            << " not both" << nl << exit(FatalIOError);
+    }
+    checkedRead::checkKeywords
+    (
+        dict,
+        fromFit
+      ? wordList({"fitPosterior", "confidence", "stepFraction"})
+      : wordList({"parameters", "correlation", "confidence", "stepFraction"}),
+        "uncertainty"
+    );
+
+    if (fromFit)
+    {
+        fileName file(dict.get<fileName>("fitPosterior"));
+        file.expand();
+        if (!file.isAbsolute())
+        {
+            file = casePath/file;
+        }
+        file.clean();
+        IFstream is(file);
+        if (!is.good())
         {
             FatalIOErrorInFunction(dict)
-                << "Keyword 'correlation': not positive semi-definite"
-                << " (smallest eigenvalue " << minEigen << " < 0): not a"
-                << " correlation matrix" << nl << exit(FatalIOError);
+                << "Keyword 'fitPosterior': cannot read " << file
+                << " (hearthFit writes <workDir>/posterior.dict; a path"
+                << " relative to the case or absolute)" << nl
+                << exit(FatalIOError);
         }
+        dictionary post(is);
+        post.remove("FoamFile");
+        checkedRead::checkKeywords
+        (
+            post,
+            wordList({"parameters", "correlation"}),
+            "hearthFit posterior"
+        );
+        if (!post.isDict("parameters") || !post.found("correlation"))
+        {
+            FatalIOErrorInFunction(post)
+                << "hearthFit posterior " << file << ": missing keyword '"
+                << (post.isDict("parameters") ? "correlation" : "parameters")
+                << "' (expected parameters { name { file ...; entry ...;"
+                << " value ...; sd ...; } ... } and correlation (...);"
+                << " as hearthFit writes them)" << nl
+                << exit(FatalIOError);
+        }
+        readParameters(post.subDict("parameters"), true);
+        readCorrelation(post);
+    }
+    else
+    {
+        if (!dict.isDict("parameters"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "uncertainty: missing sub-dictionary 'parameters' (name"
+                << " { file <relative to the case>; entry <keyword path>;"
+                << " sd <standard deviation>; } entries) or keyword"
+                << " fitPosterior (a hearthFit posterior file)" << nl
+                << exit(FatalIOError);
+        }
+        readParameters(dict.subDict("parameters"), false);
+        readCorrelation(dict);
     }
 
     confidence_ =
