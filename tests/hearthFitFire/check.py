@@ -12,9 +12,12 @@
   1e-3 (linear model), no warning; identifiability (knots' fixed scale,
   no regularisation rows) the same for the regularised and unregularised
   fits;
+- a knot reported not identifiable has a larger se than every
+  identifiable knot (not a Celsius-value verdict);
 - a fixed weight 100 x the discrepancy weight: chi^2 at the estimate
   outside N -/+ 2 sqrt(2N), warned, the discrepancy weight at the
-  estimate suggested (= the weight of 1, linear model);
+  estimate suggested (= the weight of 1, linear model); a 26th knot after
+  the run's end not identifiable (regularisation rows left out);
 - knots, not regularised (rule none): visibly unstable: its RMS error
   against the truth, the oscillation of its error (second differences
   |L2 (T - T_true)|) and its variance (trace of the covariance) each
@@ -109,6 +112,12 @@ def identifiability(case):
     return (int(m.group(1)), m.group(3).strip()) if m else (None, None)
 
 
+def not_identifiable(case):
+    rank, ranking = identifiability(case)
+    names = [x.split()[0] for x in re.split(r' > | \| ', ranking or '')]
+    return names[rank:] if rank is not None else None
+
+
 # The linearisation's n + 1 = 26 runs (initial values and the forward
 # differences of the 25 knots, the fit's own steps) are the fit's first
 # evaluation and Jacobian: all reused (before: the initial run only,
@@ -144,6 +153,20 @@ print('    identifiability, not regularised: rank %s; %s' % idn)
 c.true('identifiability printed', idr[0] is not None and idn[0] is not None)
 c.true('identifiability: same rank and ranking with and without'
        ' regularisation', idr == idn)
+# The verdicts follow the standard errors, not the knots' Celsius values:
+# a knot declared not identifiable has a larger standard error than every
+# identifiable one (measured: all 25 identifiable; with |T| in C as the
+# scale Tfire_1, estimate 10.5 C and se 12.5 K, was declared not
+# identifiable while Tfire_25, se 36 K, was: planted as the mutation
+# identifiabilityCelsiusScale)
+se = {r['name']: float(r['std_error']) for r in reg}
+ni = not_identifiable('knots') or []
+ok_se = [n for n in se if n not in ni]
+c.true('regularised: a knot not identifiable has a larger se than every'
+       ' identifiable one',
+       not ni or min(se[n] for n in ni) > max(se[n] for n in ok_se),
+       'not identifiable: %s' % (', '.join('%s (se %.1f K)' % (n, se[n])
+                                           for n in ni) or 'none'))
 
 # 2c. A fixed weight 100 x the discrepancy weight
 hlog = open(os.path.join(scratch, 'heavy/log.hearthFit')).read()
@@ -158,6 +181,11 @@ if chi2h is not None:
     c.true('heavy weight: chi^2 outside N -/+ 2 sqrt(2N)',
            abs(chi2h - Nh) > band, '%.2f' % chi2h)
     c.true('heavy weight: warned at the estimate', warned)
+    # the 26th knot (7500 s, after the run's 7200 s): no data row sees
+    # it; only the regularisation rows (left out) would identify it
+    nih = not_identifiable('heavy')
+    c.true('heavy: Tfire_26 (after the run) not identifiable, every other'
+           ' knot identifiable', nih == ['Tfire_26'], str(nih))
     mw = re.search(r'estimate gives w = (\S+) s\^3/K\^2', hlog)
     c.true('heavy weight: the discrepancy weight at the estimate suggested',
            mw is not None)
