@@ -156,9 +156,13 @@ c.true('identifiability: same rank and ranking with and without'
 # The verdicts follow the standard errors, not the knots' Celsius values:
 # a knot declared not identifiable has a larger standard error than every
 # identifiable one (measured: all 25 identifiable; with |T| in C as the
-# scale Tfire_1, estimate 10.5 C and se 12.5 K, was declared not
-# identifiable while Tfire_25, se 36 K, was: planted as the mutation
-# identifiabilityCelsiusScale)
+# scale and the regularisation rows in, Tfire_1, estimate 10.5 C and se
+# 12.5 K, was declared not identifiable while Tfire_25, se 36 K, was.
+# The planted bugs identifiabilityCelsiusScale and
+# identifiabilityWithRegularisationRows, each alone, pass this check and
+# are caught by the heavy case's: with |T| in C Tfire_1, at 17.8 C, is
+# declared not identifiable; with the regularisation rows in, Tfire_26 is
+# identifiable)
 se = {r['name']: float(r['std_error']) for r in reg}
 ni = not_identifiable('knots') or []
 ok_se = [n for n in se if n not in ni]
