@@ -7,6 +7,17 @@
   95 % band at >= 90 % of the 25 knots (the band is the posterior of the
   smoothness prior: its bias at the two corners of the law, end of ramp
   and extinction, may put those knots outside);
+- the weight's linearisation (26 runs) reused by the fit, 25 runs fewer
+  than before; the data-only chi^2 at the estimate printed, = N within
+  1e-3 (linear model), no warning; identifiability (knots' fixed scale,
+  no regularisation rows) the same for the regularised and unregularised
+  fits;
+- a knot reported not identifiable has a larger se than every
+  identifiable knot (not a Celsius-value verdict);
+- a fixed weight 100 x the discrepancy weight: chi^2 at the estimate
+  outside N -/+ 2 sqrt(2N), warned, the discrepancy weight at the
+  estimate suggested (= the weight of 1, linear model); a 26th knot after
+  the run's end not identifiable (regularisation rows left out);
 - knots, not regularised (rule none): visibly unstable: its RMS error
   against the truth, the oscillation of its error (second differences
   |L2 (T - T_true)|) and its variance (trace of the covariance) each
@@ -53,7 +64,7 @@ T = [truth(t) for t in knots]
 
 # 1. Regularised
 log = open(os.path.join(scratch, 'knots/log.hearthFit')).read()
-m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N = (\d+) data; '
+m = re.search(r'weight w = (\S+) s\^3/K\^2: chi\^2 = (\S+) \(N = (\d+) data; '
               r'unregularised (\S+)\)', log)
 c.true('regularisation weight printed (discrepancy)', m is not None,
        m.group(0) if m else '')
@@ -70,6 +81,126 @@ for r, t, ok in zip(reg, T, inside):
              '' if ok else 'OUTSIDE'))
 c.true('truth within the 95 % band at >= 90 % of the knots',
        sum(inside) >= 0.9*len(T), '%d of %d' % (sum(inside), len(T)))
+
+# 1b. The weight's linearisation reused by the fit; chi^2 at the estimate;
+#     identifiability
+
+
+def report(case):
+    return open(os.path.join(scratch, case,
+                             'postProcessing/hearthFit/report.txt')).read()
+
+
+def reused(case):
+    m = re.search(r'forward runs reused (\d+)', report(case))
+    return int(m.group(1)) if m else -1
+
+
+def runs(case):
+    m = re.search(r'forward runs (\d+) \(', report(case))
+    return int(m.group(1)) if m else -1
+
+
+def chi2_estimate(text):
+    m = re.search(r'at the estimate: data-only chi\^2 = (\S+) \(N = (\d+)', text)
+    return (float(m.group(1)), int(m.group(2))) if m else (None, None)
+
+
+def identifiability(case):
+    m = re.search(r'identifiability \(subset selection.*?\): rank (\d+) of '
+                  r'(\d+).*?ranking: (.*)', report(case))
+    return (int(m.group(1)), m.group(3).strip()) if m else (None, None)
+
+
+def not_identifiable(case):
+    rank, ranking = identifiability(case)
+    names = [x.split()[0] for x in re.split(r' > | \| ', ranking or '')]
+    return names[rank:] if rank is not None else None
+
+
+# The linearisation's n + 1 = 26 runs (initial values and the forward
+# differences of the 25 knots, the fit's own steps) are the fit's first
+# evaluation and Jacobian: all reused (before: the initial run only,
+# reused 1, and 127 runs made; the unregularised fit, which chooses no
+# weight, reuses none)
+nReused, nRuns = reused('knots'), runs('knots')
+print('    knots: forward runs %d, reused %d (rule none: %d runs, reused %d)'
+      % (nRuns, nReused, runs('none'), reused('none')))
+c.true('the linearisation\'s 26 runs reused by the fit', nReused >= 26,
+       'reused %d' % nReused)
+c.true('runs made: 25 fewer than before (127)', nRuns <= 127 - 25,
+       '%d' % nRuns)
+chi2e, Ne = chi2_estimate(log)
+c.true('data-only chi^2 at the estimate printed', chi2e is not None)
+if chi2e is not None:
+    # the model is linear: the estimate's chi^2 is the linearisation's
+    # chi^2(w) = N up to the Gauss-Newton stop and the finite differences
+    print('    discrepancy: data-only chi^2 at the estimate %.4f (N = %d)'
+          % (chi2e, Ne))
+    c.le('|chi^2_data/N - 1| at the estimate (linear model)',
+         abs(chi2e/Ne - 1), 1e-3)
+c.true('discrepancy: no warning at the estimate',
+       'at the estimate, ' not in log)
+# Identifiability from the data rows (regularisation rows left out) with
+# the knots' fixed scale (not |T| in C): the regularised and the
+# unregularised fits, whose estimates differ (Tfire_1 10.5 C against
+# -13 C ...), have the same data Jacobian (linear model) and so the same
+# verdicts and ranking; with |p| scaling, or the regularisation rows in,
+# they differ
+idr, idn = identifiability('knots'), identifiability('none')
+print('    identifiability, regularised: rank %s; %s' % idr)
+print('    identifiability, not regularised: rank %s; %s' % idn)
+c.true('identifiability printed', idr[0] is not None and idn[0] is not None)
+c.true('identifiability: same rank and ranking with and without'
+       ' regularisation', idr == idn)
+# The verdicts follow the standard errors, not the knots' Celsius values:
+# a knot declared not identifiable has a larger standard error than every
+# identifiable one (measured: all 25 identifiable; with |T| in C as the
+# scale and the regularisation rows in, Tfire_1, estimate 10.5 C and se
+# 12.5 K, was declared not identifiable while Tfire_25, se 36 K, was.
+# The planted bugs identifiabilityCelsiusScale and
+# identifiabilityWithRegularisationRows, each alone, pass this check and
+# are caught by the heavy case's: with |T| in C Tfire_1, at 17.8 C, is
+# declared not identifiable; with the regularisation rows in, Tfire_26 is
+# identifiable)
+se = {r['name']: float(r['std_error']) for r in reg}
+ni = not_identifiable('knots') or []
+ok_se = [n for n in se if n not in ni]
+c.true('regularised: a knot not identifiable has a larger se than every'
+       ' identifiable one',
+       not ni or min(se[n] for n in ni) > max(se[n] for n in ok_se),
+       'not identifiable: %s' % (', '.join('%s (se %.1f K)' % (n, se[n])
+                                           for n in ni) or 'none'))
+
+# 2c. A fixed weight 100 x the discrepancy weight
+hlog = open(os.path.join(scratch, 'heavy/log.hearthFit')).read()
+chi2h, Nh = chi2_estimate(hlog)
+c.true('heavy weight: data-only chi^2 at the estimate printed',
+       chi2h is not None)
+if chi2h is not None:
+    band = 2*math.sqrt(2*Nh)
+    warned = 'at the estimate, ' in hlog
+    print('    heavy weight: data-only chi^2 at the estimate %.2f (band %d'
+          ' -/+ %.1f), warned %s' % (chi2h, Nh, band, warned))
+    c.true('heavy weight: chi^2 outside N -/+ 2 sqrt(2N)',
+           abs(chi2h - Nh) > band, '%.2f' % chi2h)
+    c.true('heavy weight: warned at the estimate', warned)
+    # the 26th knot (7500 s, after the run's 7200 s): no data row sees
+    # it; only the regularisation rows (left out) would identify it
+    nih = not_identifiable('heavy')
+    c.true('heavy: Tfire_26 (after the run) not identifiable, every other'
+           ' knot identifiable', nih == ['Tfire_26'], str(nih))
+    mw = re.search(r'estimate gives w = (\S+) s\^3/K\^2', hlog)
+    c.true('heavy weight: the discrepancy weight at the estimate suggested',
+           mw is not None)
+    if mw and m:
+        # linear model: the linearisation at the estimate is the one at
+        # the initial values up to the finite differences' noise (central
+        # there, forward here): measured 1.06e-3; the weight moved by
+        # 3.3e-3 when only the steps of the linearisation changed (old
+        # 1e-3 max(|p|, 100) against the fit's): 1 % allowed
+        c.le('suggested weight = the discrepancy weight of 1 (rel.)',
+             abs(float(mw.group(1))/w - 1), 1e-2)
 
 # 2. Not regularised
 none = params('none')
@@ -115,12 +246,13 @@ c.true('unregularised variance (trace) >= 2.5 x regularised', vn >= 2.5*vr,
 
 # 2b. L-curve
 llog = open(os.path.join(scratch, 'lcurve/log.hearthFit')).read()
-m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N', llog)
+m = re.search(r'weight w = (\S+) s\^3/K\^2: chi\^2 = (\S+) \(N', llog)
 c.true('L-curve weight printed', m is not None, m.group(0) if m else '')
 if m:
     wl = float(m.group(1))
     # the searched range is [1e-12, 1e12] in 240 log steps of 10^0.1: an
-    # end means the corner was not found (measured: 0.0158, chi^2 151)
+    # end means the corner was not found (measured: 3.98e5 s^3/K^2, chi^2
+    # 150.1; 0.0158 1/K^2 with plain differences, chi^2 151.4)
     c.true('L-curve weight inside (1.3e-12, 8e11)', 1.3e-12 < wl < 8e11,
            '%.4g' % wl)
     # The band holds the noise's variance only: a warning iff the weight

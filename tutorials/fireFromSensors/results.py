@@ -51,7 +51,7 @@ def measure(src, out):
 def compare():
     with open('log.hearthFit') as f:
         log = f.read()
-    m = re.search(r'weight w = (\S+) 1/K\^2: chi\^2 = (\S+) \(N = (\d+) data; '
+    m = re.search(r'weight w = (\S+) s\^3/K\^2: chi\^2 = (\S+) \(N = (\d+) data; '
                   r'unregularised (\S+)\)', log)
     w, chi2, N, chi2u = (float(m.group(1)), float(m.group(2)),
                          int(m.group(3)), float(m.group(4)))
@@ -62,7 +62,7 @@ def compare():
         est = list(csv.DictReader(f))
     fig = ht.Figures()
     print('fireFromSensors: the fire history at the knots')
-    print('weight w = %.3g 1/K^2 (discrepancy principle: chi^2 = %.1f = N = %d;'
+    print('weight w = %.3g s^3/K^2 (discrepancy principle: chi^2 = %.1f = N = %d;'
           ' unregularised %.1f)' % (w, chi2, N, chi2u))
     print('%8s %9s %9s %9s %9s %9s  %s' % ('t [min]', 'truth', 'estimate',
           'std err', 'lower', 'upper', 'truth in band'))
@@ -83,7 +83,7 @@ def compare():
     peak = max(float(e['estimate']) for e in est)
     print('truth inside the 95 %% band at %d of %d knots; RMS error %.1f C;'
           ' highest knot %.0f C (truth 700 C)' % (inside, len(knots), rms, peak))
-    fig.add('weight', w, '1/K2')
+    fig.add('weight', w, 's3/K2')
     fig.add('chi2', chi2, '1')
     fig.add('nData', N, '1')
     fig.add('chi2Unregularised', chi2u, '1')

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -222,6 +223,7 @@ Foam::fitFire::fitFire
             readBounded(dict.subDict("duration"), "fireDuration", 0);
         hearthFit::FitParameter T =
             readBounded(dict.subDict("temperature"), "fireTemperature", -273.15);
+        T.sensitivityScale = 100;   // K, as the knots' (Celsius: no scale)
         // The law checked (keywords, ranges) with the initial values, and
         // the duration bounds against its ramp
         dictionary fd(lawFire_);
@@ -290,6 +292,10 @@ Foam::fitFire::fitFire
         p.lower = Tmin;
         p.upper = Tmax;
         p.typical = 100;        // K: the finite-difference step's scale
+        // and the scale of the identifiability SVD (a Celsius value is no
+        // scale: a knot at 10 C would look 10 times less identifiable
+        // than the same knot at 100 C)
+        p.sensitivityScale = p.typical;
         ParameterSpec s;
         s.name = p.name;
         s.fireIndex = k;
@@ -432,75 +438,68 @@ std::unique_ptr<hearthFit::tikhonov> Foam::fitFire::regularisation
     }
     return std::unique_ptr<hearthFit::tikhonov>
     (
-        new hearthFit::tikhonov(nPar, first_, knots_.size(), order_, weight_)
+        new hearthFit::tikhonov
+        (
+            nPar, first_,
+            std::vector<double>(knots_.begin(), knots_.end()),
+            order_, weight_
+        )
     );
+}
+
+
+Foam::word Foam::fitFire::weightUnit() const
+{
+    return order_ == 1 ? "s/K^2" : "s^3/K^2";
 }
 
 
 void Foam::fitFire::chooseWeight
 (
     hearthFit::tikhonov& reg,
-    fitForwardRuns& fwd,
-    const fitParameters& params,
-    const fitObservations& obs
+    hearthFit::levenbergMarquardt& lm,
+    const label nData
 ) const
 {
     static const char* names[] = {"fixed", "discrepancy", "lCurve"};
     const char* ruleName = names[int(rule_)];
     Info<< "Fire regularisation: " << (order_ == 1 ? "first" : "second")
-        << " differences of the " << knots_.size() << " knot temperatures,"
-        << " rule " << ruleName << endl;
+        << " divided differences of the " << knots_.size() << " knot"
+        << " temperatures (|L T|^2 ~ integral of "
+        << (order_ == 1 ? "T'^2" : "T''^2") << " dt), rule " << ruleName
+        << endl;
     if (rule_ == hearthFit::tikhonov::Rule::fixed)
     {
-        Info<< "    weight w = " << reg.weight() << " 1/K^2 (given)" << endl;
+        Info<< "    weight w = " << reg.weight() << ' ' << weightUnit().c_str()
+            << " (given)" << endl;
         return;
     }
 
-    // The linearisation at the initial (or resumed) values p0: one forward
-    // difference per parameter (steps of 1e-3 max(|p|, typical, 1): not
-    // those of the fit's first Jacobian, whose runs are therefore made
-    // again)
-    const label n = params.size(), m = obs.size();
-    hearthFit::Vector p0(n);
-    for (label j = 0; j < n; ++j)
+    // The linearisation at the initial (or resumed) values p0: the fit's
+    // own first Jacobian (levenbergMarquardt::initialLinearisation: its
+    // steps, bounds handling and retries), whose runs the fit then finds
+    // made (fitForwardRuns caches runs by parameters)
+    hearthFit::Vector p0, r;
+    hearthFit::Matrix J;
+    if (!lm.initialLinearisation(p0, r, J))
     {
-        p0(j) = params.pars[j].initial;
+        FatalErrorInFunction
+            << "fire regularisation: a forward run of the"
+            << " linearisation at the initial values failed: cannot"
+            << " choose the weight (rule " << ruleName << ")"
+            << exit(FatalError);
     }
-    std::vector<hearthFit::Evaluation> batch(n + 1);
-    std::vector<double> h(n);
-    batch[0].parameters = p0;
-    for (label j = 0; j < n; ++j)
-    {
-        const hearthFit::FitParameter& q = params.pars[j];
-        h[j] = 1e-3*std::max(std::abs(p0(j)), std::max(q.typical, 1.0));
-        if (p0(j) + h[j] > q.upper) h[j] = -h[j];
-        batch[j + 1].parameters = p0;
-        batch[j + 1].parameters(j) += h[j];
-    }
-    fwd.evaluate(batch, params, obs);
-    for (const hearthFit::Evaluation& e : batch)
-    {
-        if (!e.ok)
-        {
-            FatalErrorInFunction
-                << "fire regularisation: a forward run of the"
-                << " linearisation at the initial values failed: cannot"
-                << " choose the weight (rule " << ruleName << ")"
-                << exit(FatalError);
-        }
-    }
-    const hearthFit::Vector r0 = batch[0].residuals.head(m);
-    hearthFit::Matrix J(m, n);
-    for (label j = 0; j < n; ++j)
-    {
-        J.col(j) = (batch[j + 1].residuals.head(m) - r0)/h[j];
-    }
-    const hearthFit::tikhonov::Choice c = reg.choose(rule_, J, r0, p0);
-    Info<< "    weight w = " << c.weight << " 1/K^2: chi^2 = " << c.chi2
-        << " (N = " << m << " data; unregularised " << c.chi2Unregularised
-        << "), roughness |L T| = " << c.roughness << " K"
-        << " (linearisation at the initial values, " << n + 1 << " runs)"
-        << endl;
+    // The data rows only (the prior and regularisation rows follow them)
+    const hearthFit::Vector r0 = r.head(nData);
+    const hearthFit::Matrix Jd = J.topRows(nData);
+    const hearthFit::tikhonov::Choice c = reg.choose(rule_, Jd, r0, p0);
+    Info<< "    weight w = " << c.weight << ' ' << weightUnit().c_str()
+        << ": chi^2 = " << c.chi2
+        << " (N = " << nData << " data; unregularised " << c.chi2Unregularised
+        << "), roughness |L T| = " << c.roughness << " K/s^"
+        << (order_ == 1 ? "0.5" : "1.5")
+        << " (linearisation at the initial values: the fit's first Jacobian,"
+        << " " << p0.size() + 1 << " runs)" << endl;
     if (c.message.size())
     {
         WarningInFunction << "fire regularisation: " << c.message.c_str()
@@ -512,7 +511,8 @@ void Foam::fitFire::chooseWeight
     // the noise's band (the discrepancy rule: chi^2 = N), not when it
     // smooths more (chi^2 above N + 2 sqrt(2N), two standard deviations
     // of a chi-square of N degrees of freedom)
-    const scalar chi2Band = m + 2*std::sqrt(2.0*m);
+    const scalar chi2Band =
+        nData + hearthFit::tikhonov::dataMisfitBand(nData);
     if (c.chi2 > chi2Band)
     {
         WarningInFunction
@@ -523,6 +523,64 @@ void Foam::fitFire::chooseWeight
             << " intervals (the noise's variance only) do not cover that"
             << " bias. Rule discrepancy keeps chi^2 = N" << endl;
     }
+}
+
+
+void Foam::fitFire::checkAtEstimate
+(
+    const hearthFit::tikhonov& reg,
+    const hearthFit::FitResult& res,
+    const label nData
+) const
+{
+    if (res.residuals.size() < nData) return;
+    static const char* names[] = {"fixed", "discrepancy", "lCurve"};
+    const char* ruleName = names[int(rule_)];
+    const scalar chi2 = res.residuals.head(nData).squaredNorm();
+    const scalar band = hearthFit::tikhonov::dataMisfitBand(nData);
+    Info<< "Fire regularisation at the estimate: data-only chi^2 = " << chi2
+        << " (N = " << nData << ", band N -/+ 2 sqrt(2N) = [" << nData - band
+        << ", " << nData + band << "]; the final cost " << res.cost
+        << " includes the penalty w |L T|^2 = "
+        << res.residuals.tail(reg.rows()).squaredNorm()
+        << ")" << endl;
+    if (hearthFit::tikhonov::dataMisfitInBand(chi2, nData)) return;
+
+    // The weight the discrepancy principle gives on the linearisation at
+    // the estimate (the final Jacobian: no run)
+    std::ostringstream alt;
+    if
+    (
+        res.jacobian.rows() == res.residuals.size()
+     && res.jacobian.allFinite()
+    )
+    {
+        hearthFit::tikhonov probe(reg);
+        const hearthFit::tikhonov::Choice c = probe.choose
+        (
+            hearthFit::tikhonov::Rule::discrepancy,
+            res.jacobian.topRows(nData),
+            res.residuals.head(nData),
+            res.parameters
+        );
+        alt << "; the discrepancy principle on the linearisation at the"
+            << " estimate gives w = " << c.weight << ' '
+            << weightUnit().c_str() << " (chi^2 " << c.chi2 << " there):"
+            << " rerun with rule fixed; weight " << c.weight
+            << "; (or start from the estimate)";
+    }
+    WarningInFunction
+        << "fire regularisation: the data-only chi^2 at the estimate, "
+        << chi2 << ", is outside the noise's band N -/+ 2 sqrt(2N) = "
+        << nData << " -/+ " << band << " (rule " << ruleName << ", weight "
+        << reg.weight() << ' ' << weightUnit().c_str()
+        << (rule_ == hearthFit::tikhonov::Rule::fixed ? "" : ", chosen on"
+            " the linearisation at the initial values: the forward model is"
+            " not linear in the knots")
+        << "): the history is "
+        << (chi2 > nData ? "smoothed beyond the noise (biased, the knots'"
+            " intervals do not cover the bias)" : "fitted into the noise")
+        << alt.str().c_str() << endl;
 }
 
 

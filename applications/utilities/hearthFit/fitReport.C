@@ -5,6 +5,7 @@
 #include "fitReport.H"
 #include "fitDisplacements.H"
 #include "fitPredictions.H"
+#include "fitFire.H"
 #include "casePaths.H"
 #include "scratchCase.H"
 #include "OSspecific.H"
@@ -55,20 +56,27 @@ namespace
 
 // Identifiable parameters and their ranking (Mansour 2015 §4.8 subset
 // selection, src/numerics/identifiability) from the final scaled Jacobian
-// J diag(|p|); numerical rank: singular values above 1e-3 of the largest
-// (her bound: the Jacobian's error ~ sqrt of the solver's 1e-6)
+// J diag(s) (s_j = |p_j|, or the parameter's fixed sensitivityScale: the
+// fire's temperatures, in Celsius, have 100 K), of the data and prior rows:
+// the regularisation rows (nReg, the last ones) are left out, they make
+// any knot "identifiable"; numerical rank: singular values above 1e-3 of
+// the largest (her bound: the Jacobian's error ~ sqrt of the solver's 1e-6)
 void identifiabilityLines
 (
     std::ostringstream& rep,
     const hearthFit::FitResult& res,
-    const Foam::fitParameters& params
+    const Foam::fitParameters& params,
+    const long nReg
 )
 {
-    if (res.jacobian.rows() == 0 || !res.jacobian.allFinite()) return;
+    if (res.jacobian.rows() <= nReg || !res.jacobian.allFinite()) return;
+    if (res.sensitivityScale.size() != res.jacobian.cols()) return;
     const double threshold = 1e-3;
     const hearthFit::SubsetSelection s = hearthFit::subsetSelection
     (
-        res.jacobian*res.parameters.cwiseAbs().asDiagonal(), threshold, true
+        res.jacobian.topRows(res.jacobian.rows() - nReg)
+       *res.sensitivityScale.asDiagonal(),
+        threshold, true
     );
     rep << "\nidentifiability (subset selection, Mansour 2015 4.8): rank "
         << s.rank << " of " << params.size() << " (singular values above "
@@ -401,13 +409,24 @@ void Foam::fitReport::write
         }
         rep << "\n";
     }
+    // (fixed scales: the fire's temperatures; the rows of the covariance,
+    // regularisation rows included)
+    bool fixedScale = false;
+    for (const auto& q : params_.pars) fixedScale |= q.sensitivityScale > 0;
     rep << std::setprecision(6)
-        << "\nsingular values of the scaled Jacobian J diag(|p|):";
+        << "\nsingular values of the scaled Jacobian J diag("
+        << (fixedScale ? "s), s = |p| or the fixed scale of the fire's"
+            " temperatures (100 K), regularisation rows included" : "|p|)")
+        << ':';
     for (label j = 0; j < res.singularValues.size(); ++j)
     {
         rep << ' ' << res.singularValues(j);
     }
-    identifiabilityLines(rep, res, params_);
+    identifiabilityLines
+    (
+        rep, res, params_,
+        params_.fire ? params_.fire->regularisationRows() : 0
+    );
     rep << "\n\nRMS residual per sensor [C]\n";
 
     // Fitted histories from the residuals at the best parameters

@@ -320,8 +320,9 @@ int main(int argc, char *argv[])
     try
     {
         // The fire's regularisation weight, chosen on the linearisation
-        // at the initial (or resumed) values (n + 1 runs of its own)
-        if (reg) params.fire->chooseWeight(*reg, fwd, params, obs);
+        // at the initial (or resumed) values: the fit's first Jacobian,
+        // whose n + 1 runs the fit reuses
+        if (reg) params.fire->chooseWeight(*reg, *lm, obs.size());
         res = lm->solve();
     }
     catch (const fitInterrupted&)
@@ -334,6 +335,7 @@ int main(int argc, char *argv[])
     }
 
     // ---- Report, the case with the best parameters
+    if (reg) params.fire->checkAtEstimate(*reg, res, obs.size());
     report.write(res, opts);
     report.writePosterior(res, post, preds);
     if (refinement)

@@ -144,6 +144,10 @@ levenbergMarquardt::levenbergMarquardt
                 );
             }
         }
+        if (!(q.sensitivityScale >= 0) || !std::isfinite(q.sensitivityScale))
+        {
+            throw std::invalid_argument(who + "sensitivityScale must be >= 0");
+        }
         typical_(j) = q.typical > 0 ? q.typical : 1e-2*std::abs(q.initial);
 
         if (q.transform == Transform::log)
@@ -601,8 +605,12 @@ void levenbergMarquardt::computeStatistics
     Vector scale(n_);
     for (int j = 0; j < n_; ++j)
     {
-        scale(j) = p(j) != 0 ? std::abs(p(j)) : typical_(j);
+        scale(j) =
+            params_[j].sensitivityScale > 0 ? params_[j].sensitivityScale
+          : p(j) != 0 ? std::abs(p(j))
+          : typical_(j);
     }
+    res.sensitivityScale = scale;
     const Matrix Js = J*scale.asDiagonal();
 
     Eigen::JacobiSVD<Matrix> svd(Js, Eigen::ComputeThinV);
@@ -711,6 +719,24 @@ bool levenbergMarquardt::statistics(const Vector& p0, FitResult& res)
     res.cost = r.squaredNorm();
     computeStatistics(p, r, J, res);
     return true;
+}
+
+
+bool levenbergMarquardt::initialLinearisation(Vector& p, Vector& r, Matrix& J)
+{
+    if (!batch_)
+    {
+        throw std::logic_error("levenbergMarquardt: no residual function");
+    }
+    // The point and steps of solve()'s first iteration
+    p.resize(n_);
+    for (int j = 0; j < n_; ++j)
+    {
+        p(j) = params_[j].initial;
+    }
+    p = clampPhysical(p);
+    m_ = -1;
+    return evaluateOne(p, r) && jacobian(p, r, opts_.difference, opts_.hRel, J);
 }
 
 

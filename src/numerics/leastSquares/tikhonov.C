@@ -12,10 +12,19 @@ namespace hearthFit
 
 // * * * * * * * * * * * * * * * * Constructor  * * * * * * * * * * * * * * //
 
-tikhonov::tikhonov(int nPar, int first, int n, int order, double weight)
+tikhonov::tikhonov
+(
+    int nPar,
+    int first,
+    const std::vector<double>& knots,
+    int order,
+    double weight
+)
 :
+    order_(order),
     weight_(0)
 {
+    const int n = int(knots.size());
     if (order != 1 && order != 2)
     {
         throw std::invalid_argument
@@ -33,22 +42,56 @@ tikhonov::tikhonov(int nPar, int first, int n, int order, double weight)
           + std::to_string(order)
         );
     }
+    for (int k = 1; k < n; ++k)
+    {
+        if (!(knots[k] > knots[k - 1]) || !std::isfinite(knots[k]))
+        {
+            throw std::invalid_argument
+            (
+                "tikhonov: knots must be finite and strictly increasing"
+                " (knot " + std::to_string(k + 1) + ")"
+            );
+        }
+    }
+    // Divided differences weighted by the square root of the interval
+    // (order 1) or of the dual cell (order 2): |L p|^2 ~ integral of the
+    // squared derivative (header)
     L_ = Matrix::Zero(n - order, nPar);
     for (int i = 0; i < n - order; ++i)
     {
         if (order == 1)
         {
-            L_(i, first + i) = -1;
-            L_(i, first + i + 1) = 1;
+            const double h = knots[i + 1] - knots[i];
+            L_(i, first + i) = -1/std::sqrt(h);
+            L_(i, first + i + 1) = 1/std::sqrt(h);
         }
         else
         {
-            L_(i, first + i) = 1;
-            L_(i, first + i + 1) = -2;
-            L_(i, first + i + 2) = 1;
+            const double h0 = knots[i + 1] - knots[i];
+            const double h1 = knots[i + 2] - knots[i + 1];
+            const double hbar = 0.5*(h0 + h1);
+            // sqrt(hbar) T'' = sqrt(hbar)/hbar [(T2 - T1)/h1 - (T1 - T0)/h0]
+            const double s = 1/std::sqrt(hbar);
+            L_(i, first + i) = s/h0;
+            L_(i, first + i + 1) = -s*(1/h0 + 1/h1);
+            L_(i, first + i + 2) = s/h1;
         }
     }
     setWeight(weight);
+}
+
+
+tikhonov::tikhonov(int nPar, int first, int n, int order, double weight)
+:
+    tikhonov(nPar, first, unitKnots(n), order, weight)
+{}
+
+
+std::vector<double> tikhonov::unitKnots(int n)
+{
+    std::vector<double> t(std::max(n, 0));
+    for (int k = 0; k < n; ++k) t[k] = k;
+    return t;
 }
 
 
@@ -65,6 +108,18 @@ void tikhonov::setWeight(double w)
         );
     }
     weight_ = w;
+}
+
+
+bool tikhonov::dataMisfitInBand(double chi2, long nData)
+{
+    return std::abs(chi2 - double(nData)) <= dataMisfitBand(nData);
+}
+
+
+double tikhonov::dataMisfitBand(long nData)
+{
+    return 2*std::sqrt(2.0*double(nData));
 }
 
 
