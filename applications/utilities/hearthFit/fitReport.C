@@ -39,6 +39,11 @@ Foam::fitReport::fitReport
     clock0_(std::chrono::steady_clock::now())
 {
     for (const auto& p : params_.pars) initial0_.push_back(p.initial);
+
+    // An earlier fit's posterior must not outlive this fit (hearthDuration
+    // reads it): an interrupted fit leaves none
+    rm(fwd_.workDir/"posterior.dict");
+
     progressCsv_ << std::setprecision(8);
     if (!state_.resume)
     {
@@ -268,6 +273,8 @@ void Foam::fitReport::writePosteriorDict
         os << "// Left out (not an entry of a case file):" << left
            << "; their uncertainty is not propagated\n";
     }
+    // hearthDuration refuses the posterior of a fit that did not converge
+    os << "\nconverged   " << (res.converged ? "true" : "false") << ";\n";
     os << "\nparameters\n{\n";
     for (const label j : js)
     {
@@ -292,7 +299,15 @@ void Foam::fitReport::writePosteriorDict
             os  << (j == js[0] ? "" : " ")
                 << (
                        i == j ? 1
-                     : flip*0.5*(res.correlation(i, j) + res.correlation(j, i))
+                     : flip*min
+                       (
+                           max
+                           (
+                               0.5*(res.correlation(i, j) + res.correlation(j, i)),
+                               scalar(-1)
+                           ),
+                           scalar(1)
+                       )
                    );
         }
         os << ")\n";

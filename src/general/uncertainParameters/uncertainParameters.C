@@ -8,6 +8,8 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 
+#include <cfenv>
+
 #include <Eigen/Dense>
 #include <gsl/gsl_cdf.h>
 
@@ -65,6 +67,20 @@ void Foam::uncertainParameters::readParameters
                 << " system/controlDict and constant/fireHistory (written"
                 << " by the forward runs)" << nl
                 << exit(FatalIOError);
+        }
+
+        // One case entry, one parameter: a second would double its variance
+        forAll(names_, k)
+        {
+            if (files_[k] == file && entries_[k] == entryPath)
+            {
+                FatalIOErrorInFunction(d)
+                    << "uncertain parameter " << name << ": the entry '"
+                    << entryPath.c_str() << "' of " << file << " is already"
+                    << " uncertain parameter " << names_[k] << ": one"
+                    << " parameter per case entry" << nl
+                    << exit(FatalIOError);
+            }
         }
 
         if (!caseDicts_.found(file))
@@ -192,7 +208,7 @@ void Foam::uncertainParameters::readCorrelation(const dictionary& dict)
             (
                 (i == j && r != 1)
              || mag(r - rows[j][i]) > 1e-12
-             || mag(r) > 1
+             || mag(r) > 1 + 1e-12
             )
             {
                 FatalIOErrorInFunction(dict)
@@ -202,7 +218,7 @@ void Foam::uncertainParameters::readCorrelation(const dictionary& dict)
                     << " [-1, 1] (parameters " << names_ << ")" << nl
                     << exit(FatalIOError);
             }
-            correlation_(i, j) = r;
+            correlation_(i, j) = min(max(r, scalar(-1)), scalar(1));
         }
     }
 
@@ -284,14 +300,28 @@ Foam::uncertainParameters::uncertainParameters
                 << " relative to the case or absolute)" << nl
                 << exit(FatalIOError);
         }
+        // A number that overflows (1e400) raises FE_OVERFLOW in strtod,
+        // which OpenFOAM traps (SIGFPE): the traps are held while the file
+        // is parsed, and checkNumbers refuses the inf it reads
+        std::fenv_t fenv;
+        std::feholdexcept(&fenv);
         dictionary post(is);
+        std::fesetenv(&fenv);
         post.remove("FoamFile");
         checkedRead::checkKeywords
         (
             post,
-            wordList({"parameters", "correlation"}),
+            wordList({"converged", "parameters", "correlation"}),
             "hearthFit posterior"
         );
+        if (!post.get<bool>("converged"))
+        {
+            FatalIOErrorInFunction(post)
+                << "hearthFit posterior " << file << ": keyword 'converged'"
+                << " is false: the fit did not converge, its covariance is"
+                << " not a posterior (rerun or resume the fit until it"
+                << " converges)" << nl << exit(FatalIOError);
+        }
         if (!post.isDict("parameters") || !post.found("correlation"))
         {
             FatalIOErrorInFunction(post)
@@ -330,6 +360,27 @@ Foam::uncertainParameters::uncertainParameters
         (
             dict, "stepFraction", dimless, 1, validRange{0, 1, true, false}
         ).value();
+
+    // The first-order propagation differentiates over value -/+
+    // stepFraction sd: a step across zero (an sd of the size of the value)
+    // would run the model with a property of the wrong sign, and a
+    // linearisation over it means nothing
+    forAll(names_, j)
+    {
+        const scalar step = stepFraction_*sds_[j];
+        if (values_[j] != 0 && step >= mag(values_[j]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "uncertain parameter " << names_[j] << ": value "
+                << values_[j] << " -/+ stepFraction x sd = " << step
+                << " changes sign (sd " << sds_[j] << ", stepFraction "
+                << stepFraction_ << "): a first-order interval needs an sd"
+                << " well below the value; lower keyword 'stepFraction'"
+                << " in (0, " << mag(values_[j])/sds_[j] << ") or"
+                << " constrain the parameter better" << nl
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
