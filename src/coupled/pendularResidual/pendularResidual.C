@@ -7,6 +7,7 @@
 #include "processorFvPatch.H"
 #include "syncTools.H"
 #include "waterModel.H"
+#include "liquidFlow.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -332,6 +333,7 @@ void Foam::pendularResidual::faceFlux
             o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
             fvMesh_.nonOrthDeltaCoeffs()[facei], F
         );
+        addLiquidFlux(facei, o, n, F);
         return;
     }
 
@@ -347,6 +349,7 @@ void Foam::pendularResidual::faceFlux
         fvMesh_.weights().boundaryField()[patchi][i],
         fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i], F
     );
+    addLiquidFlux(facei, o, n, F);
 }
 
 
@@ -409,6 +412,66 @@ void Foam::pendularResidual::boundaryFlux
             F[2] = conduction;
         }
     }
+
+    // The liquid by its own condition (liquidFlow: impermeable where not
+    // given), the face state at the patch's saturation and the face's p_g
+    // and T; outflow carries the cell's enthalpy, inflow the face's
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    if (liquid && liquid->type(patchi) != liquidFlow::patchType::impermeable)
+    {
+        cellState f(b);
+        f.alpha = liquid->value(patchi);
+        const scalar Fl =
+            liquid->boundaryFlux
+            (
+                facei, patchi, i, liquidState(c), liquidState(f)
+            );
+        F[0] += Fl;
+        F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
+    }
+}
+
+
+Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
+(
+    const cellState& s
+) const
+{
+    return
+        medium_.liquidFlowPtr()->state
+        (
+            s.p, s.alpha,
+            min
+            (
+                max(s.T, medium_.minimumTemperature()),
+                medium_.dryOutTemperature()
+            )
+        );
+}
+
+
+void Foam::pendularResidual::addLiquidFlux
+(
+    const label facei,
+    const cellState& o,
+    const cellState& n,
+    scalar* F
+) const
+{
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    if (!liquid)
+    {
+        return;
+    }
+    const scalar Fl =
+        liquid->faceFlux
+        (
+            facei,
+            liquidState(o),
+            liquidState(n)
+        );
+    F[0] += Fl;
+    F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);
 }
 
 
