@@ -416,19 +416,34 @@ void Foam::pendularResidual::boundaryFlux
     // The liquid by its own condition (liquidFlow: impermeable where not
     // given), the face state at the patch's saturation and the face's p_g
     // and T; outflow carries the cell's enthalpy, inflow the face's
+    scalar FlE;
+    F[0] += liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    F[2] += FlE;
+}
+
+
+Foam::scalar Foam::pendularResidual::liquidBoundaryFlux
+(
+    const label facei,
+    const label patchi,
+    const label i,
+    const cellState& c,
+    const cellState& b,
+    scalar& enthalpyFlow
+) const
+{
+    enthalpyFlow = 0;
     const liquidFlow* liquid = medium_.liquidFlowPtr();
-    if (liquid && liquid->type(patchi) != liquidFlow::patchType::impermeable)
+    if (!liquid || liquid->type(patchi) == liquidFlow::patchType::impermeable)
     {
-        cellState f(b);
-        f.alpha = liquid->value(patchi);
-        const scalar Fl =
-            liquid->boundaryFlux
-            (
-                facei, patchi, i, liquidState(c), liquidState(f)
-            );
-        F[0] += Fl;
-        F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
+        return 0;
     }
+    cellState f(b);
+    f.alpha = liquid->value(patchi);
+    const scalar Fl =
+        liquid->boundaryFlux(facei, patchi, i, liquidState(c), liquidState(f));
+    enthalpyFlow = Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
+    return Fl;
 }
 
 
@@ -447,6 +462,46 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
                 medium_.dryOutTemperature()
             )
         );
+}
+
+
+void Foam::pendularResidual::liquidBoundaryFlows
+(
+    const scalarField& x,
+    scalarList& mass,
+    scalarList& energy
+) const
+{
+    mass.setSize(fvMesh_.boundary().size());
+    energy.setSize(fvMesh_.boundary().size());
+    mass = Zero;
+    energy = Zero;
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    forAll(fvMesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = fvMesh_.boundary()[patchi];
+        if
+        (
+            !liquid || patch.coupled()
+         || liquid->type(patchi) == liquidFlow::patchType::impermeable
+        )
+        {
+            continue;
+        }
+        forAll(patch, i)
+        {
+            const label celli = patch.faceCells()[i];
+            const cellState c = state(celli, &x[3*celli]);
+            scalar FlE;
+            mass[patchi] +=
+                liquidBoundaryFlux
+                (
+                    patch.start() + i, patchi, i, c,
+                    boundaryState(patchi, i, c), FlE
+                );
+            energy[patchi] += FlE;
+        }
+    }
 }
 
 
