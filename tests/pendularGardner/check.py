@@ -94,7 +94,7 @@ def check(scratch):
         case = os.path.join(scratch, 'serial_%d' % n)
         alpha = read_alpha(case)
         err[n] = head_error(alpha)
-        print('N = %d: max |h - h_Gardner| = %.4g m' % (n, err[n]))
+        print('N = %d: max |h - h_Gardner| = %.6g m' % (n, err[n]))
         # the balances the solver reports at each write: round-off of the
         # stored amounts (1e-10 asked, issue 14)
         c.le('N = %d: largest relative imbalance (water, air, energy)' % n,
@@ -108,6 +108,12 @@ def check(scratch):
         order = math.log(err[n]/err[2*n])/math.log(2)
         at_least(c, 'observed order %d -> %d cells' % (n, 2*n), order, 0.85)
     c.le('N = 200: max |h - h_Gardner| [m]', err[200], 1.2*err[100]/2)
+    # the README's figures (0.01435 m at 100 cells, 0.00746 m at 200: 1e-5,
+    # twice their last printed digit's half)
+    c.le('N = 100 error vs the README\'s 0.01435 m', abs(err[100] - 0.01435),
+         1e-5)
+    c.le('N = 200 error vs the README\'s 0.00746 m', abs(err[200] - 0.00746),
+         1e-5)
     # a plausible wrong answer: the profile of E 10 % larger is off by more
     # than twice the 100-cell error
     n = 100
