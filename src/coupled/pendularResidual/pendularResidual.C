@@ -7,6 +7,7 @@
 #include "processorFvPatch.H"
 #include "syncTools.H"
 #include "waterModel.H"
+#include "liquidFlow.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -332,6 +333,7 @@ void Foam::pendularResidual::faceFlux
             o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
             fvMesh_.nonOrthDeltaCoeffs()[facei], F
         );
+        addLiquidFlux(facei, o, n, F);
         return;
     }
 
@@ -347,6 +349,7 @@ void Foam::pendularResidual::faceFlux
         fvMesh_.weights().boundaryField()[patchi][i],
         fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i], F
     );
+    addLiquidFlux(facei, o, n, F);
 }
 
 
@@ -409,6 +412,121 @@ void Foam::pendularResidual::boundaryFlux
             F[2] = conduction;
         }
     }
+
+    // The liquid by its own condition (liquidFlow: impermeable where not
+    // given), the face state at the patch's saturation and the face's p_g
+    // and T; outflow carries the cell's enthalpy, inflow the face's
+    scalar FlE;
+    F[0] += liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    F[2] += FlE;
+}
+
+
+Foam::scalar Foam::pendularResidual::liquidBoundaryFlux
+(
+    const label facei,
+    const label patchi,
+    const label i,
+    const cellState& c,
+    const cellState& b,
+    scalar& enthalpyFlow
+) const
+{
+    enthalpyFlow = 0;
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    if (!liquid || liquid->type(patchi) == liquidFlow::patchType::impermeable)
+    {
+        return 0;
+    }
+    cellState f(b);
+    f.alpha = liquid->value(patchi);
+    const scalar Fl =
+        liquid->boundaryFlux(facei, patchi, i, liquidState(c), liquidState(f));
+    enthalpyFlow = Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
+    return Fl;
+}
+
+
+Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
+(
+    const cellState& s
+) const
+{
+    return
+        medium_.liquidFlowPtr()->state
+        (
+            s.p, s.alpha,
+            min
+            (
+                max(s.T, medium_.minimumTemperature()),
+                medium_.dryOutTemperature()
+            )
+        );
+}
+
+
+void Foam::pendularResidual::liquidBoundaryFlows
+(
+    const scalarField& x,
+    scalarList& mass,
+    scalarList& energy
+) const
+{
+    mass.setSize(fvMesh_.boundary().size());
+    energy.setSize(fvMesh_.boundary().size());
+    mass = Zero;
+    energy = Zero;
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    forAll(fvMesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = fvMesh_.boundary()[patchi];
+        if
+        (
+            !liquid || patch.coupled()
+         || liquid->type(patchi) == liquidFlow::patchType::impermeable
+        )
+        {
+            continue;
+        }
+        forAll(patch, i)
+        {
+            const label celli = patch.faceCells()[i];
+            const cellState c = state(celli, &x[3*celli]);
+            scalar FlE;
+            mass[patchi] +=
+                liquidBoundaryFlux
+                (
+                    patch.start() + i, patchi, i, c,
+                    boundaryState(patchi, i, c), FlE
+                );
+            energy[patchi] += FlE;
+        }
+    }
+}
+
+
+void Foam::pendularResidual::addLiquidFlux
+(
+    const label facei,
+    const cellState& o,
+    const cellState& n,
+    scalar* F
+) const
+{
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    if (!liquid)
+    {
+        return;
+    }
+    const scalar Fl =
+        liquid->faceFlux
+        (
+            facei,
+            liquidState(o),
+            liquidState(n)
+        );
+    F[0] += Fl;
+    F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);
 }
 
 

@@ -10,107 +10,6 @@
 #include "volFields.H"
 #include "surfaceFields.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::richardsResidual::patchType>
-Foam::richardsResidual::patchTypeNames
-({
-    { patchType::fixedSaturation, "fixedSaturation" },
-    { patchType::fixedFlux, "fixedFlux" },
-    { patchType::impermeable, "impermeable" },
-});
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::richardsResidual::readBoundary(const dictionary& dict)
-{
-    const polyBoundaryMesh& pbm = fvMesh_.boundaryMesh();
-    if (!dict.isDict("boundary"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Missing sub-dictionary 'boundary' in " << dict.name()
-            << ": a condition (" << flatOutput(patchTypeNames.sortedToc())
-            << ") for every patch" << exit(FatalIOError);
-    }
-    const dictionary& bDict = dict.subDict("boundary");
-    wordList names;
-    forAll(pbm, patchi)
-    {
-        const polyPatch& pp = pbm[patchi];
-        if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp))
-        {
-            type_[patchi] = patchType::impermeable;
-            continue;
-        }
-        if (pp.coupled())
-        {
-            FatalIOErrorInFunction(bDict)
-                << "Patch '" << pp.name() << "' of type " << pp.type()
-                << ": coupled patches other than processor are not"
-                << " supported" << exit(FatalIOError);
-        }
-        names.append(pp.name());
-        if (!bDict.isDict(pp.name()))
-        {
-            FatalIOErrorInFunction(bDict)
-                << "No condition for patch '" << pp.name() << "' in "
-                << bDict.name() << ": valid types "
-                << flatOutput(patchTypeNames.sortedToc())
-                << exit(FatalIOError);
-        }
-        const dictionary& pDict = bDict.subDict(pp.name());
-        if (!pDict.found("type"))
-        {
-            FatalIOErrorInFunction(pDict)
-                << "Missing keyword 'type' for patch '" << pp.name()
-                << "': valid types " << flatOutput(patchTypeNames.sortedToc())
-                << exit(FatalIOError);
-        }
-        type_[patchi] =
-            checkedRead::getChoice
-            (
-                pDict, "type", patchTypeNames, patchType::impermeable
-            );
-        const string where("liquid boundary condition of patch " + pp.name());
-        switch (type_[patchi])
-        {
-            case patchType::fixedSaturation:
-                checkedRead::checkKeywords(pDict, {"type", "S"}, where);
-                value_[patchi] =
-                    checkedRead::get
-                    (
-                        pDict, "S", dimless,
-                        validRange{minSaturation(), 1, true, false}
-                    ).value();
-                break;
-            case patchType::fixedFlux:
-                checkedRead::checkKeywords(pDict, {"type", "flux"}, where);
-                value_[patchi] =
-                    checkedRead::get
-                    (
-                        pDict, "flux", dimMass/dimArea/dimTime,
-                        validRange{-GREAT, GREAT, false, false}
-                    ).value();
-                break;
-            case patchType::impermeable:
-                checkedRead::checkKeywords(pDict, {"type"}, where);
-                break;
-        }
-    }
-    checkedRead::checkKeywords(bDict, names, "patches of the mesh");
-}
-
-
-Foam::liquidDarcyFlux::liquidState Foam::richardsResidual::state
-(
-    const scalar S
-) const
-{
-    return darcy_.state(pg_, min(S, scalar(1)), T_, K_);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::richardsResidual::richardsResidual
@@ -123,13 +22,6 @@ Foam::richardsResidual::richardsResidual
 :
     coupledResidual(mesh, 1, scalarField(1, 1.0), scheme),
     fvMesh_(mesh),
-    K_
-    (
-        checkedRead::get
-        (
-            dict, "permeability", dimArea, checkedRead::positive()
-        ).value()
-    ),
     phi_
     (
         checkedRead::get
@@ -151,74 +43,20 @@ Foam::richardsResidual::richardsResidual
             dict, "temperature", dimTemperature, checkedRead::positive()
         ).value()
     ),
-    pc_(capillaryPressureModel::New(dict)),
-    kr_(relativePermeabilityModel::New(dict)),
-    darcy_(dict, g, pc_(), kr_()),
-    type_(mesh.boundaryMesh().size(), patchType::impermeable),
-    value_(mesh.boundaryMesh().size(), Zero),
+    liquid_(mesh, dict, g, true),
     dt_(1),
-    S0_(mesh.nCells(), Zero),
-    delta_(mesh.nBoundaryFaces(), Zero)
+    S0_(mesh.nCells(), Zero)
 {
-    forAll(mesh.boundary(), patchi)
-    {
-        const fvPatch& p = mesh.boundary()[patchi];
-        if (!isA<emptyPolyPatch>(p.patch()))
-        {
-            SubList<vector>(delta_, p.size(), p.start() - mesh.nInternalFaces())
-                = p.delta();
-        }
-    }
     checkedRead::checkKeywords(dict, keywords(dict));
-    readBoundary(dict);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::richardsResidual::readGravity(const fvMesh& mesh)
-{
-    const uniformDimensionedVectorField g
-    (
-        IOobject
-        (
-            "g",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
-    if (g.dimensions() != dimAcceleration)
-    {
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__, g.objectPath(), -1, -1
-        )
-            << "Gravity g has dimensions " << g.dimensions()
-            << ", expected " << dimAcceleration << " [m/s^2]"
-            << exit(FatalIOError);
-    }
-    return g.value();
-}
-
-
 Foam::wordList Foam::richardsResidual::keywords(const dictionary& dict) const
 {
-    wordList keys
-    ({
-        "permeability", "porosity", "gasPressure", "temperature", "boundary"
-    });
-    keys.append(liquidDarcyFlux::keywords());
-    keys.append(effectiveSaturation::keywords());
-    keys.append
-    (
-        checkedRead::modelKeywords(dict, "capillaryPressureModel", pc_())
-    );
-    keys.append
-    (
-        checkedRead::modelKeywords(dict, "relativePermeabilityModel", kr_())
-    );
+    wordList keys({"porosity", "gasPressure", "temperature"});
+    keys.append(liquid_.keywords(dict));
     return keys;
 }
 
@@ -238,7 +76,7 @@ Foam::scalar Foam::richardsResidual::water(const scalarField& S) const
 {
     return returnReduce
     (
-        phi_*darcy_.rhoLiquid()*sum(S*fvMesh_.V().field()),
+        phi_*liquid_.darcy().rhoLiquid()*sum(S*fvMesh_.V().field()),
         sumOp<scalar>()
     );
 }
@@ -269,7 +107,7 @@ Foam::scalar Foam::richardsResidual::outflow(const scalarField& S) const
 
 Foam::scalar Foam::richardsResidual::storage(const label celli) const
 {
-    return phi_*darcy_.rhoLiquid()*fvMesh_.V()[celli]/dt_;
+    return phi_*liquid_.darcy().rhoLiquid()*fvMesh_.V()[celli]/dt_;
 }
 
 
@@ -292,34 +130,7 @@ void Foam::richardsResidual::faceFlux
     scalar* F
 ) const
 {
-    if (facei < fvMesh_.nInternalFaces())
-    {
-        const vectorField& C = fvMesh_.C();
-        F[0] =
-            darcy_.massFlux
-            (
-                state(xOwn[0]),
-                state(xNei[0]),
-                C[fvMesh_.faceNeighbour()[facei]] - C[fvMesh_.faceOwner()[facei]],
-                fvMesh_.magSf()[facei],
-                fvMesh_.nonOrthDeltaCoeffs()[facei],
-                fvMesh_.weights()[facei]
-            );
-        return;
-    }
-    // A face of a processor patch: the internal face seen from this side
-    label patchi, i;
-    patchFace(facei, patchi, i);
-    F[0] =
-        darcy_.massFlux
-        (
-            state(xOwn[0]),
-            state(xNei[0]),
-            delta_[facei - fvMesh_.nInternalFaces()],
-            fvMesh_.magSf().boundaryField()[patchi][i],
-            fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
-            fvMesh_.weights().boundaryField()[patchi][i]
-        );
+    F[0] = liquid_.faceFlux(facei, state(xOwn[0]), state(xNei[0]));
 }
 
 
@@ -332,28 +143,11 @@ void Foam::richardsResidual::boundaryFlux
 {
     label patchi, i;
     patchFace(facei, patchi, i);
-    const scalar magSf = fvMesh_.magSf().boundaryField()[patchi][i];
-    switch (type_[patchi])
-    {
-        case patchType::fixedSaturation:
-            F[0] =
-                darcy_.massFlux
-                (
-                    state(xOwn[0]),
-                    state(value_[patchi]),
-                    delta_[facei - fvMesh_.nInternalFaces()],
-                    magSf,
-                    fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
-                    0.5
-                );
-            break;
-        case patchType::fixedFlux:
-            F[0] = value_[patchi]*magSf;
-            break;
-        case patchType::impermeable:
-            F[0] = 0;
-            break;
-    }
+    F[0] =
+        liquid_.boundaryFlux
+        (
+            facei, patchi, i, state(xOwn[0]), state(liquid_.value(patchi))
+        );
 }
 
 

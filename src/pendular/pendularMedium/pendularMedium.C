@@ -7,6 +7,7 @@
 #include "checkedRead.H"
 #include "startupReport.H"
 #include "waterModel.H"
+#include "liquidFlow.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -75,7 +76,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         ({
             "CpAir", "Ma", "CpVapour",
             "latentHeat", "latentHeatTemperature", "vapourDiffusivity",
-            "gasViscosity", "tortuosity"
+            "gasViscosity", "tortuosity", "liquidFlow"
         });
         allowed.append
         (
@@ -142,6 +143,48 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
             closures_, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
         ).value();
 
+
+    // The capillary flow of the liquid (optional): its closures and patch
+    // conditions (liquidFlow), the liquid's density that of the soil,
+    // fixed saturations within the pendular range, gravity constant/g
+    if (closures_.found("liquidFlow"))
+    {
+        if (!closures_.isDict("liquidFlow"))
+        {
+            FatalIOErrorInFunction(closures_)
+                << "liquidFlow in " << closures_.name() << " must be a"
+                << " sub-dictionary (capillaryPressureModel,"
+                << " relativePermeabilityModel, permeability, muLiquid, ...)"
+                << exit(FatalIOError);
+        }
+        const dictionary& userDict = closures_.subDict("liquidFlow");
+        if (userDict.found("rhoLiquid"))
+        {
+            FatalIOErrorInFunction(userDict)
+                << "rhoLiquid in " << userDict.name() << ": the liquid's"
+                << " density is the soil's (" << rhoL() << " kg/m3), not"
+                << " set here" << exit(FatalIOError);
+        }
+        dictionary dict(userDict);
+        dict.add("rhoLiquid", rhoL());
+        liquidFlow_.reset
+        (
+            new liquidFlow
+            (
+                mesh, dict, liquidFlow::readGravity(mesh), false,
+                pendularLimit()
+            )
+        );
+        wordList allowed;
+        for (const word& key : liquidFlow_->keywords(dict))
+        {
+            if (key != "rhoLiquid")
+            {
+                allowed.append(key);
+            }
+        }
+        checkedRead::checkKeywords(userDict, allowed);
+    }
 
     checkedRead::check
     (

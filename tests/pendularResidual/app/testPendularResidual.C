@@ -34,6 +34,7 @@ Description
 #include "petscSession.H"
 #include "blockSystem.H"
 #include "pendularResidual.H"
+#include "liquidFlow.H"
 #include "unitChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -264,6 +265,11 @@ DynamicList<scalar> newton
 
 int main(int argc, char *argv[])
 {
+    argList::addBoolOption
+    (
+        "liquidFlow",
+        "the case's soil has liquidFlow: check the Jacobian only (2L)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -326,6 +332,81 @@ int main(int argc, char *argv[])
     const scalarField x0(pendularResidual::pack(T0, p0, W0, pRef));
     const scalarField x(pendularResidual::pack(T, p, W, pRef));
     pendularResidual res(medium, T, p, pw, pRef, x0, alpha, dt);
+
+    // 2L. with the liquid's capillary Darcy flux (the case's liquidFlow,
+    // on the state of the step without it): the Jacobian against a central
+    // difference of the full residual, as in 2, after checking that the
+    // liquid flux matters: at least 1 % of some cell's water moves through
+    // a face in the step (else the check would not see its derivatives)
+    if (args.found("liquidFlow"))
+    {
+        const liquidFlow* liquid = medium.liquidFlowPtr();
+        checkAtLeast("the soil has liquidFlow", liquid ? 1 : 0, 1, 0);
+        if (liquid)
+        {
+            section("2L. Jacobian with liquid flow, every column");
+            // The nearly dry cells (alpha_l ~ 1e-10 after the step) given
+            // alpha_l 1e-3 more: where the liquid is much less than the
+            // vapour, the step of W (6e-6 of it) is a large fraction of
+            // alpha_l and the finite differences of p_c(alpha_l) ~
+            // alpha_l^(-1/2) (and of the cell's own Kelvin-Laplace state)
+            // are off by their truncation; the step's state without
+            // liquid flow is one state of many, not a solution
+            scalarField xL(x);
+            forAll(T, c)
+            {
+                if (res.state(c, &x[3*c]).alpha < 1e-3)
+                {
+                    xL[3*c + 2] += phi[c]*medium.rhoL()*1e-3;
+                }
+            }
+            scalar share = 0;
+            for (label f = 0; f < mesh.nInternalFaces(); ++f)
+            {
+                const label o = mesh.faceOwner()[f];
+                const label n = mesh.faceNeighbour()[f];
+                const pendularResidual::cellState so = res.state(o, &xL[3*o]);
+                const pendularResidual::cellState sn = res.state(n, &xL[3*n]);
+                const scalar Fl =
+                    liquid->faceFlux
+                    (
+                        f,
+                        res.liquidState(so),
+                        res.liquidState(sn)
+                    );
+                share =
+                    max
+                    (
+                        share,
+                        mag(Fl)*dt
+                       /max(so.W*mesh.V()[o], sn.W*mesh.V()[n])
+                    );
+            }
+            checkAtLeast
+            (
+                "max |F_l| dt/(V W) of a face's cells", share, 0.01, 0
+            );
+            jacobianCheck(mesh, res, xL, "liquid flow, alpha_l >= 1e-3");
+            // Cells 8-10 warm (330-340 K, wet, p_w below p_g: p_c through
+            // sigma(T), the enthalpy carried across a T difference). Not with
+            // dry cells: the pendular p_c ~ alpha_l^(-1/2) is unbounded
+            // as alpha_l -> 0 (1e50 Pa at the meniscus model's floor),
+            // so is the liquid's flux into a dry cell (README, liquid
+            // flow: its range)
+            scalarField xHot(xL);
+            for (label c = 8; c <= 10; ++c)
+            {
+                xHot[3*c] = 330 + 5*(c - 8);
+            }
+            jacobianCheck
+            (
+                mesh, res, xHot, "liquid flow, cells 8-10 at 330-340 K"
+            );
+        }
+        Info<< nl << nChecks - nFailed << " of " << nChecks
+            << " checks passed" << endl;
+        return nFailed > 0;
+    }
 
     // 1. consistency
     section("1. residual at pendularFoam's step / its tolerances");
