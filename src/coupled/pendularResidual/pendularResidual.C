@@ -8,6 +8,7 @@
 #include "syncTools.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
+#include "pendularNewton.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -44,6 +45,10 @@ Foam::pendularResidual::pendularResidual
     A0_(fvMesh_.nCells()),
     E0_(fvMesh_.nCells()),
     a0_(1),
+    a0W_(fvMesh_.nCells(), 1),
+    eulerCells_(),
+    eulerHistory_(),
+    Tn_(fvMesh_.nCells()),
     alphaGuess_(alphaGuess),
     cache_(fvMesh_.nCells()),
     cacheNext_(fvMesh_.nCells(), Zero),
@@ -92,6 +97,7 @@ Foam::pendularResidual::pendularResidual
     forAll(W0_, celli)
     {
         const cellState s = state(celli, &x0[3*celli]);
+        Tn_[celli] = x0[3*celli];
         W0_[celli] = s.W;
         A0_[celli] = s.A;
         E0_[celli] = s.E;
@@ -115,12 +121,51 @@ void Foam::pendularResidual::bdf2
 )
 {
     a0_ = a0;
+    DynamicList<label> cells;
+    DynamicList<scalar> history;
+    const scalarField& phi = medium_.porosity().primitiveField();
     forAll(W0_, celli)
     {
-        W0_[celli] = a1*Wold[celli] - a2*WOlder[celli];
+        const scalar H = a1*Wold[celli] - a2*WOlder[celli];
+        if
+        (
+            H < 0
+         && WOlder[celli]
+          < pendularNewton::kinkWater(medium_, phi[celli], Tn_[celli])
+        )
+        {
+            // W >= 0 out of reach: backward Euler for this water
+            a0W_[celli] = 1;
+            W0_[celli] = Wold[celli];
+            cells.append(celli);
+            history.append(H - Wold[celli]);
+        }
+        else
+        {
+            a0W_[celli] = a0;
+            W0_[celli] = H;
+        }
         A0_[celli] = a1*Aold[celli] - a2*AOlder[celli];
         E0_[celli] = a1*Eold[celli] - a2*EOlder[celli];
     }
+    eulerCells_.transfer(cells);
+    eulerHistory_.transfer(history);
+}
+
+
+Foam::scalar Foam::pendularResidual::waterEulerCorrection
+(
+    const scalarField& x
+) const
+{
+    const scalarField& V = fvMesh_.V();
+    scalar c = 0;
+    forAll(eulerCells_, i)
+    {
+        const label celli = eulerCells_[i];
+        c += V[celli]*((a0_ - 1)*x[3*celli + 2] - eulerHistory_[i]);
+    }
+    return returnReduce(c, sumOp<scalar>());
 }
 
 
@@ -287,7 +332,7 @@ void Foam::pendularResidual::scales
         const scalar phi = medium_.porosity()[celli];
         const cellState s = state(celli, &x[3*celli]);
         const scalar pa = s.pa;
-        water[celli] = a0_*V[celli]/dt_;
+        water[celli] = a0W_[celli]*V[celli]/dt_;
         gas[celli] =
             a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
            /(medium_.R()*s.T*dt_);
@@ -310,7 +355,7 @@ void Foam::pendularResidual::cellTerm
 {
     const cellState s = state(celli, x);
     const scalar VByDt = fvMesh_.V()[celli]/dt_;
-    S[0] = VByDt*(a0_*s.W - W0_[celli]);
+    S[0] = VByDt*(a0W_[celli]*s.W - W0_[celli]);
     S[1] = VByDt*(a0_*s.A - A0_[celli]);
     S[2] = VByDt*(a0_*s.E - E0_[celli]);
 }

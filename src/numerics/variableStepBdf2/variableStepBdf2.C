@@ -103,7 +103,8 @@ void Foam::variableStepBdf2::accept
 (
     const scalarField& xn,
     const scalar dt,
-    const scalarField& totals
+    const scalarField& totals,
+    const scalarField& excluded
 )
 {
     // The balance correction c_n of this step (0 for backward Euler)
@@ -111,7 +112,9 @@ void Foam::variableStepBdf2::accept
     forAll(total_, k)
     {
         const scalar dM = totals[k] - total_[k];
-        correction_[k] += w/(1 + w)*(dM - w*change_[k]);
+        correction_[k] +=
+            w/(1 + w)*(dM - w*change_[k])
+          - (excluded.size() ? excluded[k] : 0);
         change_[k] = dM;
         total_[k] = totals[k];
     }
