@@ -284,13 +284,13 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         {
             rFirst = rMax;
         }
-        else if (rMax > divergenceFactor_*rFirst)
+        else if (rMax > divergenceFactor_*max(rFirst, scalar(1)))
         {
             out.failure =
                 "the Newton iterations diverged: largest scaled residual "
               + Foam::name(rMax) + " tolerances > "
               + Foam::name(divergenceFactor_) + " times the first iterate's "
-              + Foam::name(rFirst);
+              + Foam::name(rFirst) + " (or one tolerance)";
             return out;
         }
         if (iter == maxIter_)
