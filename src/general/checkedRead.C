@@ -590,7 +590,11 @@ void Foam::checkedRead::checkDuplicates(const dictionary& dict)
         {
             const auto dot = name.rfind('.');
             const auto slash = name.rfind('/');
-            if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+            if
+            (
+                dot == std::string::npos
+             || (slash != std::string::npos && dot < slash)
+            )
             {
                 return fileName();
             }
@@ -601,7 +605,10 @@ void Foam::checkedRead::checkDuplicates(const dictionary& dict)
     fileName found(fileOf(file));
     if (found.empty() && Pstream::parRun())
     {
-        const string proc("/processor" + Foam::name(Pstream::myProcNo()) + "/");
+        const string proc
+        (
+            "/processor" + Foam::name(Pstream::myProcNo()) + "/"
+        );
         const auto pos = file.find(proc);
         if (pos != std::string::npos)
         {
