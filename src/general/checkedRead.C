@@ -11,6 +11,11 @@
 #include "IOdictionary.H"
 #include "IFstream.H"
 #include "wordRe.H"
+#include "dictionaryEntry.H"
+#include "primitiveEntry.H"
+#include "ISstream.H"
+#include "OSspecific.H"
+#include "Pstream.H"
 
 #include <cctype>
 #include <cmath>
@@ -69,6 +74,131 @@ void missingKeyword
         << "Missing keyword '" << keyword << "' in dictionary "
         << dict.name() << ": expected " << expected.c_str()
         << nearText.c_str() << nl << exit(FatalIOError);
+}
+
+
+//- Read the entries of d from is, up to its closing '}' (sub) or the end
+//  of the file, as dictionary::read does (entry::New for the directives,
+//  #include ..., and the $substitutions) but refusing a keyword written
+//  twice in one scope: FatalIOError naming the file, the keyword, the
+//  scope and both lines. An entry brought in by #include or $sub may be
+//  overridden, as in OpenFOAM (only the file's own lines are compared)
+void readScope
+(
+    Foam::dictionary& d,
+    Foam::ISstream& is,
+    const bool sub,
+    const Foam::fileName& file,
+    const Foam::string& scope
+)
+{
+    using namespace Foam;
+    HashTable<label> lines;     // the line of each keyword of this scope
+
+    while (true)
+    {
+        // The next token, spurious ';' skipped (as entry::getKeyword)
+        token tok;
+        do
+        {
+            if (is.read(tok).bad() || is.eof() || !tok.good())
+            {
+                if (sub)
+                {
+                    FatalIOErrorInFunction(is)
+                        << "Unexpected end of file in sub-dictionary '"
+                        << scope.c_str() << "' of " << file
+                        << ": a '}' is missing" << exit(FatalIOError);
+                }
+                return;
+            }
+        }
+        while (tok == token::END_STATEMENT);
+
+        if (tok == token::END_BLOCK)
+        {
+            if (!sub)
+            {
+                FatalIOErrorInFunction(is)
+                    << "Unexpected '}' in " << file << exit(FatalIOError);
+            }
+            return;
+        }
+
+        // A plain keyword (a word not a #directive, or a quoted pattern);
+        // scoped keywords (a/b) as OpenFOAM reads them
+        const bool plain =
+        (
+            (tok.isWord() && tok.wordToken()[0] != token::HASH)
+         || tok.type() == token::tokenType::STRING
+        );
+        keyType key;
+        if (tok.isWord())
+        {
+            key = tok.wordToken();
+        }
+        else if (plain)
+        {
+            key = tok.stringToken();
+        }
+        if (!plain || key.find('/') != std::string::npos)
+        {
+            is.putBack(tok);
+            if
+            (
+                !entry::New
+                (
+                    d, is, entry::inputMode::MERGE, sub ? token::END_BLOCK : 0
+                )
+            )
+            {
+                return;
+            }
+            continue;
+        }
+
+        const label line = tok.lineNumber();
+        const auto first = lines.cfind(key);
+        if (first.found())
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, file, line, -1
+            )   << "Keyword '" << key << "' given twice in "
+                << (
+                       scope.empty()
+                     ? string("the top level")
+                     : string("sub-dictionary '" + scope + "'")
+                   ).c_str()
+                << " of " << file << ": at line " << *first
+                << " and again at line " << line
+                << " (duplicate entry: OpenFOAM would keep the last one"
+                << " silently); give it once" << nl << exit(FatalIOError);
+        }
+        lines.insert(key, line);
+
+        token next(is);
+        if (next == token::BEGIN_BLOCK)
+        {
+            entry* e =
+                d.add(new dictionaryEntry(key, d, dictionary()), true);
+            readScope
+            (
+                e->dict(), is, true, file,
+                scope.empty() ? string(key) : string(scope + '/' + key)
+            );
+            // A binary file: its FoamFile header says so
+            if (!sub && key == "FoamFile" && e->dict().found("format"))
+            {
+                is.format(e->dict().get<word>("format"));
+            }
+        }
+        else
+        {
+            is.putBack(next);
+            d.add(new primitiveEntry(key, d, is), true);
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -277,6 +407,9 @@ void Foam::checkedRead::checkKeywords
     const string& where
 )
 {
+    // A keyword given twice: OpenFOAM kept the last one silently
+    checkDuplicates(dict);
+
     for (const entry& e : dict)
     {
         const keyType& key = e.keyword();
@@ -428,25 +561,77 @@ void Foam::checkedRead::checkAirTemperature
 }
 
 
-Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const IOobject& io)
+Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
 {
-    // Read by dictionary::read, which keeps the input mode (an IOdictionary
-    // reads through operator>>, which resets it to merge)
-    const fileName path(io.globalFilePath(IOdictionary::typeName));
-    if (path.empty())
+    IFstream is(file);
+    if (!is.good())
     {
         FatalErrorInFunction
-            << "Cannot find the file " << io.objectPath() << nl
-            << exit(FatalError);
+            << "Cannot open the file " << file << nl << exit(FatalError);
     }
-    IFstream is(path);
     dictionary dict;
     dict.name() = is.name();
-    const entry::inputMode previous = entry::globalInputMode;
-    entry::globalInputMode = entry::inputMode::ERROR;
-    dict.read(is);
-    entry::globalInputMode = previous;
+    readScope(dict, is, false, dict.name(), "");
+    dict.remove("FoamFile");
     return dict;
+}
+
+
+void Foam::checkedRead::checkDuplicates(const dictionary& dict)
+{
+    // The file of dict: its name, or the name of its top-level dictionary
+    // (a sub-dictionary is named file.sub.subsub); in a parallel run a
+    // dictionary of constant/ or system/ is named in processorN/ but read
+    // from the case
+    fileName file(dict.name());
+    auto fileOf = [](fileName name)
+    {
+        while (name.size() && !isFile(name))
+        {
+            const auto dot = name.rfind('.');
+            const auto slash = name.rfind('/');
+            if
+            (
+                dot == std::string::npos
+             || (slash != std::string::npos && dot < slash)
+            )
+            {
+                return fileName();
+            }
+            name.resize(dot);
+        }
+        return name;
+    };
+    fileName found(fileOf(file));
+    if (found.empty() && Pstream::parRun())
+    {
+        const string proc
+        (
+            "/processor" + Foam::name(Pstream::myProcNo()) + "/"
+        );
+        const auto pos = file.find(proc);
+        if (pos != std::string::npos)
+        {
+            file.replace(pos, proc.size(), "/");
+            found = fileOf(file);
+        }
+    }
+    if (found.empty())
+    {
+        return;     // not read from a file
+    }
+
+    // Each file once while it is unchanged (checkKeywords checks every
+    // sub-dictionary of it)
+    static HashTable<double, fileName> checked;
+    const double modified = highResLastModified(found);
+    const auto iter = checked.cfind(found);
+    if (iter.found() && *iter == modified)
+    {
+        return;
+    }
+    checked.set(found, modified);
+    readWithoutDuplicates(found);
 }
 
 

@@ -7,6 +7,7 @@
 #include "fitForwardRuns.H"
 #include "fitObservations.H"
 #include "fireHistory.H"
+#include "fireTemperatureFvPatchScalarField.H"
 #include "checkedRead.H"
 #include "IFstream.H"
 
@@ -90,10 +91,13 @@ void checkFireFileRead
                 token tok;
                 its.read(tok);
                 if (!tok.isStringType()) continue;
-                fileName f(tok.stringToken());
-                f.expand();
-                if (!f.isAbsolute()) f = casePath/f;
-                f.clean();
+                const fileName f
+                (
+                    fireTemperatureFvPatchScalarField::resolveFile
+                    (
+                        tok.stringToken(), casePath
+                    )
+                );
                 if (f == target) return;
                 readers.append(e.keyword() + ": " + f);
             }

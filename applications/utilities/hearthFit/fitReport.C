@@ -355,19 +355,15 @@ void Foam::fitReport::write
             << res.tQuantile << "), not scaled by s^2; with the right sigma"
             << " s^2 lies in [" << res.sigma2Lower << ", " << res.sigma2Upper
             << "] (" << pc << " % chi-square band, dof " << res.dof << ")\n";
-        if (!(res.sigma2 >= res.sigma2Lower && res.sigma2 <= res.sigma2Upper))
+        bool inside = true;
+        const std::string verdict
+        (
+            hearthFit::chiSquareBandVerdict(res, opts.confidence, &inside)
+        );
+        if (!inside)
         {
             std::ostringstream w;
-            w << std::setprecision(4) << "WARNING: s^2 = " << res.sigma2
-              << " is outside its " << pc << " % chi-square band ["
-              << res.sigma2Lower << ", " << res.sigma2Upper << "]: "
-              << (
-                    res.sigma2 > res.sigma2Upper
-                  ? "model error (the model cannot reproduce the data:"
-                    " discretisation, physics, fixed parameters) or a sigma"
-                    " too small"
-                  : "a sigma too large (or data fitted by the model itself)"
-                 )
+            w << std::setprecision(4) << "WARNING: " << verdict
               << "; the residuals say a noise of " << std::sqrt(res.sigma2)
               << " x the given sigma. The intervals assume the given"
               << " sigma\n";

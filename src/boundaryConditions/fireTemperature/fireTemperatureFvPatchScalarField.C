@@ -372,6 +372,23 @@ void Foam::fireTemperatureFvPatchScalarField::addRow
 }
 
 
+Foam::fileName Foam::fireTemperatureFvPatchScalarField::resolveFile
+(
+    const fileName& given,
+    const fileName& casePath
+)
+{
+    fileName f(given);
+    f.expand();
+    if (!f.isAbsolute())
+    {
+        f = casePath/f;
+    }
+    f.clean();
+    return f;
+}
+
+
 void Foam::fireTemperatureFvPatchScalarField::readFile
 (
     const dictionary& dict
@@ -401,13 +418,7 @@ void Foam::fireTemperatureFvPatchScalarField::readFile
         }
     }
 
-    file_ = fileEntry_;
-    file_.expand();
-    if (!file_.isAbsolute())
-    {
-        file_ = db().time().globalPath()/file_;
-    }
-    file_.clean();
+    file_ = resolveFile(fileEntry_, db().time().globalPath());
 
     // (A std::ifstream that was never opened is good(): is_open() is the
     // test of a missing file)

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -49,6 +50,39 @@ std::string statusName(FitStatus s)
         case FitStatus::stalledAtFailures: return "stalledAtFailures";
     }
     return "unknown";
+}
+
+
+std::string chiSquareBandVerdict
+(
+    const FitResult& res,
+    double confidence,
+    bool* inside
+)
+{
+    const bool in =
+        res.sigma2 >= res.sigma2Lower && res.sigma2 <= res.sigma2Upper;
+    if (inside)
+    {
+        *inside = in;
+    }
+    std::ostringstream os;
+    os  << std::setprecision(4) << "s^2 = " << res.sigma2 << " is "
+        << (in ? "inside" : "outside") << " its " << 100*confidence
+        << " % chi-square band [" << res.sigma2Lower << ", "
+        << res.sigma2Upper << "]";
+    if (!in)
+    {
+        os  << ": "
+            << (
+                   res.sigma2 > res.sigma2Upper
+                 ? "model error (the model cannot reproduce the data:"
+                   " discretisation, physics, fixed parameters) or a sigma"
+                   " too small"
+                 : "a sigma too large (or data fitted by the model itself)"
+               );
+    }
+    return os.str();
 }
 
 
