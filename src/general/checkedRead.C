@@ -18,6 +18,7 @@
 #include "Pstream.H"
 
 #include <cctype>
+#include <cfenv>
 #include <cmath>
 #include <vector>
 
@@ -571,7 +572,16 @@ Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
     }
     dictionary dict;
     dict.name() = is.name();
+
+    // A number that overflows (1e400) raises FE_OVERFLOW in strtod, which
+    // OpenFOAM traps (SIGFPE): the traps are held while the file is parsed
+    // (the inf read is then refused by checkNumbers, or by the reader of
+    // the entry)
+    std::fenv_t fenv;
+    std::feholdexcept(&fenv);
     readScope(dict, is, false, dict.name(), "");
+    std::fesetenv(&fenv);
+
     dict.remove("FoamFile");
     return dict;
 }

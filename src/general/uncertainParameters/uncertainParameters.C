@@ -8,8 +8,6 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 
-#include <cfenv>
-
 #include <Eigen/Dense>
 #include <gsl/gsl_cdf.h>
 
@@ -291,8 +289,7 @@ Foam::uncertainParameters::uncertainParameters
             file = casePath/file;
         }
         file.clean();
-        IFstream is(file);
-        if (!is.good())
+        if (!isFile(file))
         {
             FatalIOErrorInFunction(dict)
                 << "Keyword 'fitPosterior': cannot read " << file
@@ -300,14 +297,9 @@ Foam::uncertainParameters::uncertainParameters
                 << " relative to the case or absolute)" << nl
                 << exit(FatalIOError);
         }
-        // A number that overflows (1e400) raises FE_OVERFLOW in strtod,
-        // which OpenFOAM traps (SIGFPE): the traps are held while the file
-        // is parsed, and checkNumbers refuses the inf it reads
-        std::fenv_t fenv;
-        std::feholdexcept(&fenv);
-        dictionary post(is);
-        std::fesetenv(&fenv);
-        post.remove("FoamFile");
+        // Duplicate keywords refused, an overflowing number (1e400) read
+        // as inf and refused by checkNumbers below (not a SIGFPE)
+        const dictionary post(checkedRead::readWithoutDuplicates(file));
         checkedRead::checkKeywords
         (
             post,
