@@ -364,9 +364,16 @@ Foam::fitFire::fitFire
     }
     if (rule_ == hearthFit::tikhonov::Rule::fixed)
     {
+        // In s/K^2 (order 1) or s^3/K^2 (order 2): the rows weigh divided
+        // differences (integrals of T'^2 or T''^2 dt); dimensions written
+        // with the value (weight [0 0 3 -2 0 0 0] 2e4;) are checked
         weight_ =
-            checkedRead::get(*reg, "weight", dimless, checkedRead::nonNegative())
-           .value();
+            checkedRead::get
+            (
+                *reg, "weight",
+                pow(dimTime, scalar(2*order_ - 1))/sqr(dimTemperature),
+                checkedRead::nonNegative()
+            ).value();
     }
     else if (reg->found("weight"))
     {
