@@ -11,17 +11,10 @@ what differs is the in-plane discretisation: the 3-D O-grid cells on the
 diagonal x = y (where the off-axis sensors are) and the fire patch, which
 in 3-D is the polygon of 80 sides inscribed in the r = 0.15 circle.
 
-Steps: maxDeltaT 20 s, maxDeltaTemperature 10 K (common/system/
-controlDict; 276 steps of the fine 3-D case). The figures measured below
-with 10 s and 5 K (twice the steps) are given with those of 20 s and 10 K
-(2026-12-02) in brackets where they differ by more than 0.01 K.
-
 Tolerances (fine level), from the discretisation:
   axis sensors  0.15 K: halving the wedge's radial cells moves the axis
                 sensors by up to 0.15 K (the 1.5 cm one; <= 0.03 K below).
-                Measured 3-D - wedge: 0.14 K coarse, 0.06 K fine (0.10 K:
-                the steps of 20 s and 10 K add 0.04 K at 1.5 cm; 0.04 K
-                at 2.5 cm, <= 0.015 K below).
+                Measured 3-D - wedge: 0.14 K coarse, 0.06 K fine.
   r = 0.10 m    1 K: the evaporation front (AHC, dT = 2 K) crosses this
                 sensor cell by cell, which leaves a mesh-dependent ripple in
                 its history: halving the wedge's radial cells moves it by
@@ -29,7 +22,7 @@ Tolerances (fine level), from the discretisation:
                 inside the fire the 3-D - wedge difference is 0.55, 0.16,
                 0.32, 0.24 K (3-D mesh with 11 instead of 10 cells across
                 the square, or 17 radial cells: 0.18, 0.61 K). Measured
-                0.22 K coarse, 0.23 K fine (0.26 K).
+                0.22 K coarse, 0.23 K fine.
   r = 0.20 m    0.25 K: this sensor, 5 cm outside the fire edge, moves by
                 0.4-0.5 K per mm of fire radius, and the 3-D polygon's sides
                 lie up to R (1 - cos(pi/80)) = 0.46 mm inside the circle:
@@ -39,14 +32,13 @@ Tolerances (fine level), from the discretisation:
   heat          2e-3: the polygon has 1.0e-3 less area than the disc, and
                 the edge's heat flux is singular: with 14-18 radial cells
                 inside the fire the discrepancy is 0.2e-3 to 1.0e-3.
-                Measured 2.9e-3 coarse, 0.29e-3 fine (0.27e-3); it must
-                also fall by at least half from coarse to fine.
+                Measured 2.9e-3 coarse, 0.29e-3 fine; it must also fall by
+                at least half from coarse to fine.
 At 1.5 times the fine resolution (a 122k-cell quarter; too slow for the
 test) the differences are 0.07 K (axis), 0.20 K (r = 0.10 m), 0.07 K
-(r = 0.20 m) and 0.09e-3 (heat) (steps of 10 s and 5 K). The step control
-(the same in both cases) contributes little: with the largest step and
-temperature change per step halved from 10 s and 5 K, the differences
-change by < 0.01 K; doubled (the test's 20 s and 10 K), by up to 0.04 K. Probes interpolate with
+(r = 0.20 m) and 0.09e-3 (heat). The step control (the same in both cases)
+does not contribute: with the largest step and temperature change per step
+halved, the differences change by < 0.01 K. Probes interpolate with
 cellPointFace; with cellPoint the interpolation across the steep front
 differs between the meshes by up to 0.9 K at r = 0.10 m.
 
