@@ -577,9 +577,13 @@ Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
     // OpenFOAM traps (SIGFPE): the traps are held while the file is parsed
     // (the inf read is then refused by checkNumbers, or by the reader of
     // the entry)
+    // (an #inputMode directive of the file sets OpenFOAM's global input
+    // mode: restored after it, as OpenFOAM's top-level reads do)
     std::fenv_t fenv;
     std::feholdexcept(&fenv);
+    const entry::inputMode mode = entry::globalInputMode;
     readScope(dict, is, false, dict.name(), "");
+    entry::globalInputMode = mode;
     std::fesetenv(&fenv);
 
     dict.remove("FoamFile");
