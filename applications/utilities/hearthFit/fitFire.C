@@ -23,6 +23,9 @@ namespace
 
 using namespace Foam;
 
+//- The keywords of hearthFit::tikhonov::Rule, in its order
+const char* const ruleNames[] = {"fixed", "discrepancy", "lCurve"};
+
 //- A fire parameter { initial; min; max; } (C or h)
 hearthFit::FitParameter readBounded
 (
@@ -333,10 +336,16 @@ Foam::fitFire::fitFire
             << " rule none (remove it)" << exit(FatalIOError);
     }
     if (noRule && !reg->found("order")) return;
-    if (rule == "discrepancy") rule_ = hearthFit::tikhonov::Rule::discrepancy;
-    else if (rule == "lCurve") rule_ = hearthFit::tikhonov::Rule::lCurve;
-    else if (rule == "fixed") rule_ = hearthFit::tikhonov::Rule::fixed;
-    else if (!noRule)
+    bool known = false;
+    for (int k = 0; k < 3; ++k)
+    {
+        if (rule == ruleNames[k])
+        {
+            rule_ = static_cast<hearthFit::tikhonov::Rule>(k);
+            known = true;
+        }
+    }
+    if (!known && !noRule)
     {
         FatalIOErrorInFunction(*reg)
             << "fire regularisation: rule " << rule << ": valid choices:"
@@ -472,8 +481,7 @@ void Foam::fitFire::chooseWeight
     const label nData
 ) const
 {
-    static const char* names[] = {"fixed", "discrepancy", "lCurve"};
-    const char* ruleName = names[int(rule_)];
+    const char* ruleName = ruleNames[int(rule_)];
     Info<< "Fire regularisation: " << (order_ == 1 ? "first" : "second")
         << " divided differences of the " << knots_.size() << " knot"
         << " temperatures (|L T|^2 ~ integral of "
@@ -545,8 +553,7 @@ void Foam::fitFire::checkAtEstimate
 ) const
 {
     if (res.residuals.size() < nData) return;
-    static const char* names[] = {"fixed", "discrepancy", "lCurve"};
-    const char* ruleName = names[int(rule_)];
+    const char* ruleName = ruleNames[int(rule_)];
     const scalar chi2 = res.residuals.head(nData).squaredNorm();
     const scalar band = hearthFit::tikhonov::dataMisfitBand(nData);
     Info<< "Fire regularisation at the estimate: data-only chi^2 = " << chi2
