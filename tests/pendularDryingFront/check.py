@@ -4,6 +4,7 @@ import math
 import os
 import sys
 import hearthcheck as hc
+from hearthTutorial import interpolate  # (hearthcheck's path)
 
 H, alpha0 = 0.1, 0.005
 # The front: alpha_l = 1e-5, between the wet side (liquid drawn to the
@@ -18,14 +19,6 @@ DEPTHS = (0.01, 0.02, 0.05)
 def depths(n):
     """Cell-centre depths, bottom cell first (as blockMesh numbers them)."""
     return [H - (i + 0.5)*H/n for i in range(n)]
-
-
-def interp(z, zs, vs):
-    pts = sorted(zip(zs, vs))
-    for (a, va), (b, vb) in zip(pts, pts[1:]):
-        if a <= z <= b:
-            return va + (vb - va)*(z - a)/(b - a)
-    raise ValueError(z)
 
 
 def front(zs, alphas):
@@ -46,7 +39,8 @@ def figures(case):
         T = hc.read_internal_field(os.path.join(case, str(t), 'T'))
         a = hc.read_internal_field(os.path.join(case, str(t), 'alphaL'))
         z = depths(len(T))
-        out[t] = [front(z, a)] + [interp(d, z, T) for d in DEPTHS]
+        out[t] = [front(z, a)] + [interpolate(z[::-1], T[::-1], d)
+                                  for d in DEPTHS]
     return out
 
 

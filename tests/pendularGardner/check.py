@@ -77,7 +77,8 @@ def check(scratch):
         # the balances the solver reports at each write: round-off of the
         # stored amounts (1e-10 asked, issue 14)
         c.le('N = %d: largest relative imbalance (water, air, energy)' % n,
-             hc.worst_relative_imbalance(os.path.join(case, 'log.pendularFoam')), 1e-10)
+             hc.worst_relative_imbalance(
+                 os.path.join(case, 'log.pendularFoam')), 1e-10)
     # upwind k_rl: first order (tests/richardsGardner: order 0.94 on the
     # water-table column); measured 0.81 (25 -> 50), 0.89, 0.95: the
     # asymptotic range from 50 cells on, where 0.85 is asked; the 200-cell

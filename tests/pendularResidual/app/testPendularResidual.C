@@ -446,7 +446,10 @@ int main(int argc, char *argv[])
                     x0Dry[3*c + k] = xDry[3*c + k];
                 }
             }
-            pendularResidual resDry(medium, T, p, pw, pRef, x0Dry, alpha, dt);
+            pendularResidual resDry
+            (
+                medium, T, p, pw, pRef, x0Dry, alpha, dt
+            );
             label nKelvin = 0, nFree = 0, nDrying = 0;
             scalar pcExcess = -GREAT, pcMax = 0;
             forAll(T, c)
@@ -472,9 +475,15 @@ int main(int argc, char *argv[])
                 pcExcess =
                     max(pcExcess, pc - liquid->capillaryPressure().pc(0, Tc));
             }
-            checkAtLeast("Kelvin-range cells (0 < alpha_l < 1e-7)", nKelvin, 4, 0);
+            checkAtLeast
+            (
+                "Kelvin-range cells (0 < alpha_l < 1e-7)", nKelvin, 4, 0
+            );
             checkAtLeast("liquid-free cells (alpha_l = 0)", nFree, 3, 0);
-            checkAtLeast("drying cells (1e-7 <= alpha_l < S_r)", nDrying, 4, 0);
+            checkAtLeast
+            (
+                "drying cells (1e-7 <= alpha_l < S_r)", nDrying, 4, 0
+            );
             checkAbs
             (
                 "max over cells of p_c - regularised p_c(0, T) [Pa], <= 0",
