@@ -41,6 +41,30 @@ def read_energy_balances(log):
     return out
 
 
+def worst_relative_imbalance(log):
+    """Largest imbalance of the water, air and energy balances of every
+    report of a pendularFoam log, relative to the larger of the flows'
+    scale (stored change and flows out, the solver's 'relative') and the
+    amount in the domain (the air's flows are ~0: its own relative figure
+    is 1 at 2e-20 kg)."""
+    worst, domain, found = 0.0, None, False
+    with open(log) as f:
+        for line in f:
+            m = re.search(r'in the domain\s+=\s+(\S+)', line)
+            if m:
+                domain = abs(float(m.group(1)))
+            m = re.search(r'imbalance\s+=\s+(\S+) \(relative (\S+)\)', line)
+            if m:
+                imb = abs(float(m.group(1)))
+                rel = abs(float(m.group(2)))
+                scale = imb/rel if rel > 0 else 0.0
+                worst = max(worst, imb/max(scale, domain or 0.0, 1e-300))
+                found = True
+    if not found:
+        raise ValueError('no balance report in ' + log)
+    return worst
+
+
 def read_solver_cost(log):
     """Cost of an ahcFoam or pendularFoam run (or of a richardsResidual
     test's, 'richards:') from its log: the sums over

@@ -62,27 +62,6 @@ def head_error(alpha):
                for i in range(n))
 
 
-def balances(log):
-    """Largest imbalance of the water, air and energy balances of every
-    report, relative to the larger of the flows' scale (stored change and
-    flows out, the solver's 'relative') and the amount in the domain (the
-    air's flows are ~0: its own relative figure is 1 at 2e-20 kg)."""
-    worst = 0.0
-    domain = None
-    with open(log) as f:
-        for line in f:
-            m = re.search(r'in the domain\s+=\s+(\S+)', line)
-            if m:
-                domain = abs(float(m.group(1)))
-            m = re.search(r'imbalance\s+=\s+(\S+) \(relative (\S+)\)', line)
-            if m:
-                imb = abs(float(m.group(1)))
-                rel = abs(float(m.group(2)))
-                scale = imb/rel if rel > 0 else 0.0
-                worst = max(worst, imb/max(scale, domain, 1e-300))
-    return worst
-
-
 def at_least(c, what, value, bound):
     return c.true(what, value >= bound, '%.4g >= %.4g' % (value, bound))
 
@@ -98,7 +77,8 @@ def check(scratch):
         # the balances the solver reports at each write: round-off of the
         # stored amounts (1e-10 asked, issue 14)
         c.le('N = %d: largest relative imbalance (water, air, energy)' % n,
-             balances(os.path.join(case, 'log.pendularFoam')), 1e-10)
+             hc.worst_relative_imbalance(
+                 os.path.join(case, 'log.pendularFoam')), 1e-10)
     # upwind k_rl: first order (tests/richardsGardner: order 0.94 on the
     # water-table column); measured 0.81 (25 -> 50), 0.89, 0.95: the
     # asymptotic range from 50 cells on, where 0.85 is asked; the 200-cell

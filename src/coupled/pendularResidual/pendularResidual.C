@@ -497,7 +497,7 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
     const cellState& s
 ) const
 {
-    return
+    liquidDarcyFlux::liquidState l =
         medium_.liquidFlowPtr()->state
         (
             s.p, s.alpha,
@@ -507,6 +507,15 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
                 medium_.dryOutTemperature()
             )
         );
+    // A cell without liquid (alpha_l = 0: above T_d; below it the
+    // Kelvin-Laplace state keeps alpha_l > 0) gives none, whatever the
+    // relative permeability law says at S = 0: the upwind k_rl of a flux
+    // out of it is 0 (ours are all 0 there already: a safeguard)
+    if (s.alpha <= 0)
+    {
+        l.krl = 0;
+    }
+    return l;
 }
 
 

@@ -187,6 +187,7 @@ Foam::wordList Foam::liquidFlow::keywords(const dictionary& dict) const
     wordList keys({"permeability", "boundary"});
     keys.append(liquidDarcyFlux::keywords());
     keys.append(effectiveSaturation::keywords());
+    keys.append(capillaryPressureModel::keywords());
     keys.append
     (
         checkedRead::modelKeywords(dict, "capillaryPressureModel", pc_())

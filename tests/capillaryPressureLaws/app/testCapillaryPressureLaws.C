@@ -23,7 +23,11 @@ Description
     - exponential: S_e = exp(-p_c/p_0) (Gardner's soil, Srivastava and
       Yeh 1991) returns S_e; p_c(1/e) = p_0;
     - residual saturations: S = S_wr + S_e (1 - S_wr - S_gr) maps to S_e;
-      above 1 - S_gr p_c = p_c(1) and dp_c/dS = 0.
+      above 1 - S_gr p_c = p_c(1) and dp_c/dS = 0;
+    - regularised dry end (pcLinearBelowSe S_r): the law above S_r, its
+      tangent below (from the law's own p_c and dp_c/dS), constant below
+      S_wr, C1 at S_r; pendular p_c(0) = 3/2 a S_r^(-1/2); dp_c/dT of the
+      tangent against central differences; S_r outside (0, 0.5] refused.
 
     Usage: testCapillaryPressureLaws [-fatal CASE]
 
@@ -250,6 +254,75 @@ void testPendular()
 }
 
 
+void testRegularised()
+{
+    section("regularised dry end (pcLinearBelowSe: the tangent below S_r)");
+    // van Genuchten, S_wr 0.1, S_r = 0.01: the unregularised law above
+    // S_r, its tangent at S_r below (from the unregularised law's p_c and
+    // dp_c/dS: an independent path), finite and constant below S_wr
+    const std::string vgText =
+        "capillaryPressureModel vanGenuchten; Swr 0.1;"
+        "vanGenuchtenCoeffs { alpha 1e-4; n 2; }";
+    auto vg = model(vgText);
+    auto reg = model(vgText + " pcLinearBelowSe 0.01;");
+    const scalar Swr = 0.1, Sr = 0.01, T = 300;
+    const scalar Slin = Swr + Sr*(1 - Swr);
+    const scalar pr = vg->pc(Slin, T), dpr = vg->dpcdS(Slin, T);
+    for (const scalar Se : {0.02, 0.5})
+    {
+        const scalar S = Swr + Se*(1 - Swr);
+        checkRel(fmt("vG regularised = law at S_e = %g", Se),
+            reg->pc(S, T), vg->pc(S, T), 1e-15);
+    }
+    for (const scalar Se : {0.0, 0.002, 0.008})
+    {
+        const scalar S = Swr + Se*(1 - Swr);
+        checkRel(fmt("vG regularised = tangent at S_r, S_e = %g", Se),
+            reg->pc(S, T), pr + dpr*(S - Slin), 1e-13);
+        if (Se > 0)
+        {
+            checkDerivatives("vG regularised", *reg, S, T, false);
+        }
+    }
+    checkRel("vG regularised below S_wr (S = 0.05) = p_c(S_wr)",
+        reg->pc(0.05, T), reg->pc(Swr, T), 1e-15);
+    checkAbs("vG regularised dp_c/dS below S_wr", reg->dpcdS(0.05, T), 0, 0);
+    // C1 at S_r: the one-sided values and slopes meet (1e-6 of S_r apart)
+    const scalar e = 1e-6*Sr*(1 - Swr);
+    // the values 2e apart differ by 2e dp_c/dS, to O(e^2 p_c'') = 1e-12
+    checkRel("vG regularised p_c continuous at S_r",
+        reg->pc(Slin - e, T), reg->pc(Slin + e, T) - 2*e*dpr, 1e-10);
+    checkRel("vG regularised dp_c/dS continuous at S_r",
+        reg->dpcdS(Slin - e, T), reg->dpcdS(Slin + e, T), 1e-5);
+
+    // pendular p_c = a S^(-1/2) (asymptotic toroidal, a = sigma C/R0):
+    // its tangent at S_r gives p_c(0) = 3/2 a S_r^(-1/2), bounded (the
+    // law itself: 1e50 Pa and more at the meniscus floor)
+    auto pen = model
+    (
+        "capillaryPressureModel pendular; pcLinearBelowSe 1e-3;"
+        "pendularCoeffs { asymptoticToroidalCoeffs { R0 1e-4; } }"
+    );
+    for (const scalar Tk : {293.15, 373.15})
+    {
+        const scalar a = pen->pc(1e-3, Tk)*std::sqrt(1e-3);
+        checkRel(fmt("pendular regularised p_c(0) = 1.5 a/sqrt(S_r), T = %g",
+            Tk), pen->pc(0, Tk), 1.5*a/std::sqrt(1e-3), 1e-12);
+    }
+    // d/dT of the tangent (sigma(T) scaling) against central differences
+    for (const scalar S : {1e-4, 5e-4, 9e-4})
+    {
+        checkDerivatives("pendular regularised", *pen, S, 373.15, true);
+    }
+    auto lj = model
+    (
+        "capillaryPressureModel leverettJ; Swr 0.15; pcLinearBelowSe 0.05;"
+        "leverettJCoeffs { permeability 1e-12; porosity 0.4; }"
+    );
+    checkDerivatives("leverettJ regularised", *lj, 0.16, 373.15, true);
+}
+
+
 void testBadInput()
 {
     section("bad input");
@@ -322,6 +395,14 @@ void testBadInput()
         [](){ model("capillaryPressureModel pendular; Swr 0.1;"
             "pendularCoeffs { asymptoticToroidalCoeffs { R0 1e-4; } }"); },
         {"pendular", "'Swr' = 0.1", "must be 0"}, true);
+    checkThrows("pcLinearBelowSe 0",
+        [](){ model("capillaryPressureModel vanGenuchten; pcLinearBelowSe 0;"
+            "vanGenuchtenCoeffs { alpha 1e-4; n 2; }"); },
+        {"pcLinearBelowSe", "(0, 0.5]"}, true);
+    checkThrows("pcLinearBelowSe 0.6",
+        [](){ model("capillaryPressureModel pendular; pcLinearBelowSe 0.6;"
+            "pendularCoeffs { asymptoticToroidalCoeffs { R0 1e-4; } }"); },
+        {"pcLinearBelowSe", "0.6", "(0, 0.5]"}, true);
     auto lj = model
     (
         "capillaryPressureModel leverettJ;"
@@ -364,6 +445,7 @@ int main(int argc, char* argv[])
     testExponential();
     testLeverettJ();
     testPendular();
+    testRegularised();
     testBadInput();
 
     Info<< nl << nChecks << " checks, " << nFailed << " failed" << endl;

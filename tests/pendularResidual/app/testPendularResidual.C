@@ -388,11 +388,7 @@ int main(int argc, char *argv[])
             );
             jacobianCheck(mesh, res, xL, "liquid flow, alpha_l >= 1e-3");
             // Cells 8-10 warm (330-340 K, wet, p_w below p_g: p_c through
-            // sigma(T), the enthalpy carried across a T difference). Not with
-            // dry cells: the pendular p_c ~ alpha_l^(-1/2) is unbounded
-            // as alpha_l -> 0 (1e50 Pa at the meniscus model's floor),
-            // so is the liquid's flux into a dry cell (README, liquid
-            // flow: its range)
+            // sigma(T), the enthalpy carried across a T difference)
             scalarField xHot(xL);
             for (label c = 8; c <= 10; ++c)
             {
@@ -401,6 +397,142 @@ int main(int argc, char *argv[])
             jacobianCheck
             (
                 mesh, res, xHot, "liquid flow, cells 8-10 at 330-340 K"
+            );
+
+            // A drying front: the case's p_c is regularised below alpha_l
+            // = S_r (pcLinearBelowSe): cells 0-3 dried to the Kelvin range
+            // (W 3e-3 kg/m3, 2/3 of the saturated vapour's: alpha_l ~
+            // 1e-8, where the unregularised law's p_c is 1e7 Pa and
+            // more), 4-7 drying (alpha_l 0.2-0.8 S_r, on the linear part
+            // of p_c), 12-14 liquid-free above T_d (T_d + 5-15 K, alpha_l
+            // = 0, W 0.02 kg/m3 of vapour, p_g 10-30 Pa up: the gas leaves
+            // them, no upwind switch of its enthalpy within the finite
+            // differences' steps; W not smaller: the steps of W, 1e-6 W,
+            // would leave the round-off of the energy residuals, 1e-16
+            // |R|/h, at 1e-6 of the entries), the
+            // others wet as above. Checked: the states are what they are
+            // meant to be, p_c of every cell within the regularised
+            // p_c(0, T), the liquid enters a Kelvin-range cell and leaves
+            // no liquid-free one (k_rl = 0 there), then the Jacobian (1e-6)
+            const scalar Sr =
+                liquid->capillaryPressure().linearBelowSe();
+            checkAtLeast("pcLinearBelowSe of the case", Sr, 1e-4, 0);
+            const scalar Td = medium.dryOutTemperature();
+            scalarField xDry(xL);
+            for (label c = 0; c <= 3; ++c)
+            {
+                xDry[3*c + 2] = 3e-3;
+            }
+            for (label c = 4; c <= 7; ++c)
+            {
+                xDry[3*c + 2] =
+                    phi[c]*medium.rhoL()*Sr*0.2*(c - 3)
+                  + res.state(c, &xDry[3*c]).rhoW*phi[c];
+            }
+            for (label c = 12; c <= 14; ++c)
+            {
+                xDry[3*c] = Td + 5*(c - 11);
+                xDry[3*c + 1] += 10*(c - 11);
+                xDry[3*c + 2] = 2e-2;
+            }
+            // The old state of the dried cells their new one (dried
+            // before the step: their energy residuals small, whose
+            // round-off would otherwise reach 1e-6 of the p columns)
+            scalarField x0Dry(x0);
+            for (const label c : {0, 1, 2, 3, 12, 13, 14})
+            {
+                for (label k = 0; k < 3; ++k)
+                {
+                    x0Dry[3*c + k] = xDry[3*c + k];
+                }
+            }
+            pendularResidual resDry
+            (
+                medium, T, p, pw, pRef, x0Dry, alpha, dt
+            );
+            label nKelvin = 0, nFree = 0, nDrying = 0;
+            scalar pcExcess = -GREAT, pcMax = 0;
+            forAll(T, c)
+            {
+                const pendularResidual::cellState s =
+                    resDry.state(c, &xDry[3*c]);
+                if (s.alpha <= 0)
+                {
+                    ++nFree;
+                }
+                else if (s.alpha < 1e-7)
+                {
+                    ++nKelvin;
+                }
+                else if (s.alpha < Sr)
+                {
+                    ++nDrying;
+                }
+                const scalar Tc =
+                    min(max(s.T, medium.minimumTemperature()), Td);
+                const scalar pc = resDry.liquidState(s).pc;
+                pcMax = max(pcMax, pc);
+                pcExcess =
+                    max(pcExcess, pc - liquid->capillaryPressure().pc(0, Tc));
+            }
+            checkAtLeast
+            (
+                "Kelvin-range cells (0 < alpha_l < 1e-7)", nKelvin, 4, 0
+            );
+            checkAtLeast("liquid-free cells (alpha_l = 0)", nFree, 3, 0);
+            checkAtLeast
+            (
+                "drying cells (1e-7 <= alpha_l < S_r)", nDrying, 4, 0
+            );
+            checkAbs
+            (
+                "max over cells of p_c - regularised p_c(0, T) [Pa], <= 0",
+                max(pcExcess, scalar(0)), 0, 0
+            );
+            Info<< "    max p_c " << pcMax << " Pa" << endl;
+            scalar intoKelvin = 0, outOfFree = 0;
+            for (label f = 0; f < mesh.nInternalFaces(); ++f)
+            {
+                const label o = mesh.faceOwner()[f];
+                const label n = mesh.faceNeighbour()[f];
+                const pendularResidual::cellState so =
+                    resDry.state(o, &xDry[3*o]);
+                const pendularResidual::cellState sn =
+                    resDry.state(n, &xDry[3*n]);
+                // out of o into n: Fl > 0
+                const scalar Fl =
+                    liquid->faceFlux
+                    (
+                        f, resDry.liquidState(so), resDry.liquidState(sn)
+                    );
+                const scalar in[2] = {-Fl, Fl};
+                const pendularResidual::cellState* s[2] = {&so, &sn};
+                for (label k = 0; k < 2; ++k)
+                {
+                    if (s[k]->alpha > 0 && s[k]->alpha < 1e-7)
+                    {
+                        intoKelvin = max(intoKelvin, in[k]);
+                    }
+                    if (s[k]->alpha <= 0)
+                    {
+                        outOfFree = max(outOfFree, -in[k]);
+                    }
+                }
+            }
+            checkAtLeast
+            (
+                "max liquid flow into a Kelvin-range cell [kg/s]",
+                intoKelvin, 1e-20, 0
+            );
+            checkAbs
+            (
+                "max liquid flow out of a liquid-free cell [kg/s]",
+                outOfFree, 0, 0
+            );
+            jacobianCheck
+            (
+                mesh, resDry, xDry,
+                "liquid flow, dry, drying and above-T_d cells"
             );
         }
         Info<< nl << nChecks - nFailed << " of " << nChecks

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "capillaryPressureModel.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,7 +22,17 @@ Foam::capillaryPressureModel::capillaryPressureModel
 )
 :
     coeffs_(coeffs),
-    saturation_(dict)
+    saturation_(dict),
+    SeLinear_
+    (
+        dict.found("pcLinearBelowSe")
+      ? checkedRead::get
+        (
+            dict, "pcLinearBelowSe", dimless,
+            validRange{0, 0.5, true, false}
+        ).value()
+      : scalar(0)
+    )
 {}
 
 
@@ -31,7 +42,7 @@ Foam::scalar Foam::capillaryPressureModel::checkedSe(const scalar S) const
 {
     const string who("capillaryPressureModel " + type());
     const scalar Se = saturation_.Se(S, who);
-    if (Se <= 0 && !boundedAtResidual())
+    if (Se <= 0 && !boundedAtResidual() && SeLinear_ <= 0)
     {
         FatalErrorInFunction
             << who.c_str() << " evaluated at S = " << S << " <= Swr = "
@@ -52,7 +63,13 @@ Foam::scalar Foam::capillaryPressureModel::pc
     const scalar T
 ) const
 {
-    return pcEff(checkedSe(S), T);
+    const scalar Se = checkedSe(S);
+    if (linear(Se))
+    {
+        const scalar Sr = SeLinear_;
+        return pcEff(Sr, T) + dpcdSeEff(Sr, T)*(Se - Sr);
+    }
+    return pcEff(Se, T);
 }
 
 
@@ -64,7 +81,11 @@ Foam::scalar Foam::capillaryPressureModel::dpcdS
 {
     const scalar Se = checkedSe(S);
     const scalar dSedS = saturation_.dSedS(S, "capillaryPressureModel " + type());
-    return dSedS > 0 ? dpcdSeEff(Se, T)*dSedS : scalar(0);
+    if (dSedS <= 0)
+    {
+        return 0;
+    }
+    return dpcdSeEff(linear(Se) ? SeLinear_ : Se, T)*dSedS;
 }
 
 
@@ -74,7 +95,18 @@ Foam::scalar Foam::capillaryPressureModel::dpcdT
     const scalar T
 ) const
 {
-    return dpcdTEff(checkedSe(S), T);
+    const scalar Se = checkedSe(S);
+    if (linear(Se))
+    {
+        // d/dT of the tangent at S_r, for p_c = s(T) f(S_e)
+        const scalar Sr = SeLinear_;
+        const scalar pcr = pcEff(Sr, T);
+        const scalar dpcdTr = dpcdTEff(Sr, T);
+        const scalar d2pc =
+            mag(pcr) > VSMALL ? dpcdSeEff(Sr, T)*dpcdTr/pcr : scalar(0);
+        return dpcdTr + d2pc*(Se - Sr);
+    }
+    return dpcdTEff(Se, T);
 }
 
 // ************************************************************************* //
