@@ -66,9 +66,17 @@ void Foam::conductivityJacobian::selectSolver(const word& fieldName)
                 << fieldName << " asymmetric: preconditioner '" << name
                 << "' of solver " << solverName << " in " << given.name()
                 << " is for symmetric matrices only" << nl
-                << "    Valid choices: "
-                << lduMatrix::preconditioner::asymMatrixConstructorTablePtr_
-                   ->sortedToc()
+                << "    Valid choices:";
+            const wordList valid
+            (
+                lduMatrix::preconditioner::asymMatrixConstructorTablePtr_
+                    ->sortedToc()
+            );
+            for (const word& v : valid)
+            {
+                FatalIOError << ' ' << v;
+            }
+            FatalIOError
                 << " (or conductivityJacobian false in the nonlinear"
                 << " controls)" << exit(FatalIOError);
         }
@@ -83,9 +91,16 @@ void Foam::conductivityJacobian::selectSolver(const word& fieldName)
                 << fieldName << " asymmetric: smoother '" << name
                 << "' of solver " << solverName << " in " << given.name()
                 << " is for symmetric matrices only" << nl
-                << "    Valid choices: "
-                << lduMatrix::smoother::asymMatrixConstructorTablePtr_
-                   ->sortedToc()
+                << "    Valid choices:";
+            const wordList valid
+            (
+                lduMatrix::smoother::asymMatrixConstructorTablePtr_->sortedToc()
+            );
+            for (const word& v : valid)
+            {
+                FatalIOError << ' ' << v;
+            }
+            FatalIOError
                 << " (or conductivityJacobian false in the nonlinear"
                 << " controls)" << exit(FatalIOError);
         }
