@@ -130,7 +130,6 @@ void Foam::conductivityJacobian::add
 (
     fvScalarMatrix& eqn,
     const volScalarField& T,
-    const surfaceScalarField& magSfSnGradT,
     const volScalarField& dKappadT
 ) const
 {
@@ -138,7 +137,11 @@ void Foam::conductivityJacobian::add
     const labelUList& nei = mesh_.neighbour();
     const surfaceScalarField& weights = mesh_.weights();
     const scalarField& w = weights.primitiveField();
-    const scalarField& G = magSfSnGradT.primitiveField();
+    // |S_f| Delta_f: G_f = gamma_f (T_N - T_P)
+    const surfaceScalarField& deltaCoeffs = mesh_.nonOrthDeltaCoeffs();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const scalarField& dc = deltaCoeffs.primitiveField();
+    const scalarField& mS = magSf.primitiveField();
     const scalarField& dk = dKappadT.primitiveField();
     const scalarField& Tk = T.primitiveField();
 
@@ -153,8 +156,9 @@ void Foam::conductivityJacobian::add
     {
         const label P = own[facei];
         const label N = nei[facei];
-        const scalar aP = w[facei]*dk[P]*G[facei];
-        const scalar aN = (1 - w[facei])*dk[N]*G[facei];
+        const scalar G = mS[facei]*dc[facei]*(Tk[N] - Tk[P]);
+        const scalar aP = w[facei]*dk[P]*G;
+        const scalar aN = (1 - w[facei])*dk[N]*G;
         const scalar aTk = aP*Tk[P] + aN*Tk[N];
 
         diag[P] -= aP;
@@ -178,7 +182,8 @@ void Foam::conductivityJacobian::add
 
         const labelUList& faceCells = p.faceCells();
         const scalarField& wp = weights.boundaryField()[patchi];
-        const scalarField& Gp = magSfSnGradT.boundaryField()[patchi];
+        const scalarField& dcp = deltaCoeffs.boundaryField()[patchi];
+        const scalarField& mSp = magSf.boundaryField()[patchi];
         const scalarField dkN
         (
             dKappadT.boundaryField()[patchi].patchNeighbourField()
@@ -189,8 +194,9 @@ void Foam::conductivityJacobian::add
         forAll(faceCells, facei)
         {
             const label P = faceCells[facei];
-            const scalar aP = wp[facei]*dk[P]*Gp[facei];
-            const scalar aN = (1 - wp[facei])*dkN[facei]*Gp[facei];
+            const scalar G = mSp[facei]*dcp[facei]*(TN[facei] - Tk[P]);
+            const scalar aP = wp[facei]*dk[P]*G;
+            const scalar aN = (1 - wp[facei])*dkN[facei]*G;
 
             diag[P] -= aP;
             bouCoeffs[facei] += aN;
