@@ -35,8 +35,7 @@ Description
     conductivityJacobian (default false) adds Newton's derivative of the
     conduction fluxes with respect to k_e(T) to each iteration
     (conductivityJacobian.H): an asymmetric matrix, solved by PBiCGStab
-    with DILU if the solver of T is PCG; andersonDepth then defaults to 0
-    (3 otherwise).
+    with DILU if the solver of T is PCG.
     An energy balance missing balanceTolerance (default 1e-6) prints a
     warning and makes the exit status 1 (balanceMonitor; strictBalance
     false: warning only). T must be above 0 K, and the initial soil at or
