@@ -2,23 +2,55 @@
 """Summarise the ahcFoam / laplacianFoam benchmark run by Allrun.
 
     analyse.py RUNDIR NSTEPS
+    analyse.py --median SUMMARY.json...   (medians over repeated runs)
 
 Each case RUNDIR/<case> holds log.<solver> and wall.<solver> (stamp.py).
 The timed window runs from the end of the first step (start-up, first
 assembly) to the end of step NSTEPS - 1 (the last step also writes the fields
-and, in ahcFoam, reports the energy balance), i.e. NSTEPS - 2 steps."""
+and, in ahcFoam, reports the energy balance), i.e. NSTEPS - 2 steps.
+The ratios and iteration counts go to RUNDIR/summary.json."""
+import json
 import os
 import re
+import statistics
 import sys
 
-runDir = sys.argv[1]
-nSteps = int(sys.argv[2])
-GOALS = {'ahcOff': 1.5, 'ahcOn': 3.0}
+GOALS = {'ahcOff': 1.5, 'ahcOn': 3.0, 'ahcOnJacobian': 3.0,
+         'ahcOnReference': 3.0}
 CASES = [
     ('laplacian', 'laplacianFoam', 'laplacianFoam (DT = k/rhoC)'),
     ('ahcOff', 'ahcFoam', 'ahcFoam, phase change off'),
     ('ahcOn', 'ahcFoam', 'ahcFoam, phase change on'),
+    ('ahcOnJacobian', 'ahcFoam', 'ahcFoam, on, k Jacobian'),
+    ('ahcOnReference', 'ahcFoam', 'ahcFoam REFERENCE, on'),
 ]
+
+if sys.argv[1] == '--median':
+    runs = [json.load(open(f)) for f in sys.argv[2:]]
+    print()
+    print('Median over %d runs (CPU per step, ratio to laplacianFoam of the '
+          'same run; nonlinear iterations per step in the timed window):'
+          % len(runs))
+    for case, _, label in CASES:
+        rs = [r[case] for r in runs if case in r]
+        if not rs:
+            continue
+        line = '%-29s cpu %7.1f ms' % (
+            label, statistics.median(x['cpu'] for x in rs)*1e3)
+        if case != 'laplacian':
+            line += ', ratio %5.2fx (runs: %s)' % (
+                statistics.median(x['ratioCpu'] for x in rs),
+                ', '.join('%.2fx' % x['ratioCpu'] for x in rs))
+        if 'picard' in rs[0]:
+            line += ', %.2f it/step' % statistics.median(
+                x['picard'] for x in rs)
+        print(line)
+    sys.exit(0)
+
+runDir = sys.argv[1]
+nSteps = int(sys.argv[2])
+CASES = [c for c in CASES if os.path.isfile(
+    os.path.join(runDir, c[0], 'log.' + c[1]))]
 
 reTime = re.compile(r'^Time = (\S+)')
 rePCG = re.compile(r'Solving for T, Initial residual = (\S+), '
@@ -129,15 +161,17 @@ for case, _, _ in CASES:
 print()
 print('%-29s %8s %8s %8s  %s' % ('ratio ahcFoam/laplacianFoam', 'wall', 'cpu',
                                  'goal', 'verdict (wall)'))
-for case in ('ahcOff', 'ahcOn'):
+ahcCases = [c for c, _, _ in CASES if c != 'laplacian']
+for case in ahcCases:
     r = res[case]
     rw, rc = r['wall']/lap['wall'], r['cpu']/lap['cpu']
+    r['ratioCpu'] = rc
     g = GOALS[case]
     print('%-29s %7.2fx %7.2fx %7.1fx  %s'
           % (r['label'], rw, rc, g,
              'meets goal' if rw <= g else 'MISSES goal (%.1fx over)' % (rw/g)))
 print()
-for case in ('ahcOff', 'ahcOn'):
+for case in ahcCases:
     r = res[case]
     print('%s: %.2f nonlinear iterations/step in the timed window (of which '
           '%.2f/step in its %d rejected attempts), %.2f over all %d steps (first '
@@ -157,3 +191,10 @@ print('check: max |T(ahcFoam off) - T(laplacianFoam)| at t = %s s: %.3g K '
       '%d vs %d (off)'
       % (tA, dmax, max(TL), max(TW), sum(t > 373.15 for t in TW),
          sum(t > 373.15 for t in TA)))
+for case in ahcCases[2:]:
+    tX, TX = readT(case)
+    print('check: max |T(%s) - T(ahcOn)| at t = %s s: %.3g K'
+          % (case, tX, max(abs(a - b) for a, b in zip(TX, TW))))
+
+with open(os.path.join(runDir, 'summary.json'), 'w') as f:
+    json.dump(res, f, indent=1)

@@ -610,4 +610,35 @@ void Foam::porousMedium::correctKappa
     }
 }
 
+void Foam::porousMedium::correctKappaDerivative
+(
+    volScalarField& dKappadT,
+    const volScalarField& kappa,
+    const volScalarField& T,
+    const volScalarField& TMax
+) const
+{
+    const scalar h = 1e-4;
+
+    forAll(dKappadT, celli)
+    {
+        dKappadT[celli] =
+            (kappaCell(celli, T[celli] + h, TMax[celli]) - kappa[celli])/h;
+    }
+
+    // Coupled patches (processor, cyclic) take the neighbour cell values;
+    // the others are not used (their conductivity follows the boundary
+    // temperature)
+    dKappadT.correctBoundaryConditions();
+    volScalarField::Boundary& dKappadTBf = dKappadT.boundaryFieldRef();
+    forAll(dKappadTBf, patchi)
+    {
+        if (!dKappadTBf[patchi].coupled())
+        {
+            dKappadTBf[patchi] = 0;
+        }
+    }
+}
+
+
 // ************************************************************************* //

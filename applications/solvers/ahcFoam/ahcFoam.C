@@ -29,7 +29,13 @@ Description
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
         system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
-                             balanceTolerance; strictBalance; }
+                             andersonDepth; extrapolate;
+                             conductivityJacobian; balanceTolerance;
+                             strictBalance; }
+    conductivityJacobian (default false) adds Newton's derivative of the
+    conduction fluxes with respect to k_e(T) to each iteration
+    (conductivityJacobian.H): an asymmetric matrix, solved by PBiCGStab
+    with DILU if the solver of T is PCG.
     An energy balance missing balanceTolerance (default 1e-6) prints a
     warning and makes the exit status 1 (balanceMonitor; strictBalance
     false: warning only). T must be above 0 K, and the initial soil at or
@@ -43,6 +49,7 @@ Description
 #include "porousMedium.H"
 #include "checkedRead.H"
 #include "andersonAcceleration.H"
+#include "conductivityJacobian.H"
 #include "adaptiveTimeStepControls.H"
 #include "subStepController.H"
 #include "balanceMonitor.H"
