@@ -27,11 +27,14 @@ print('  %-22s %8s %6s %6s %7s %6s  %s' % ('run', 'CPU [s]', 'steps', 'rej.', 'i
                                            '1 h | 3 h | 12 h'))
 for case, N, refN, runs in (
         ('column100', 100, 200, ('segregated', 'newton')),
-        ('column500', 500, 500, ('segregated', 'newton', 'newton_dT1', 'newton_dT4', 'bdf2_tol0.03',
-                               'bdf2_tol0.1', 'bdf2_tol0.3', 'bdf2_tol1'))):
+        ('column500', 500, 500, ('segregated', 'newton', 'newton_before', 'newton_dT1', 'newton_dT4',
+                               'bdf2_tol0.03', 'bdf2_tol0.1', 'bdf2_tol0.1_before', 'bdf2_tol0.3',
+                               'bdf2_tol1'))):
     depth = [H - (i + 0.5)*H/N for i in range(N)]
     for engine in runs:
         d = os.path.join(work, '%s_%s' % (case, engine))
+        if engine.endswith('_before') and not os.path.isdir(d):
+            continue
         try:
             u, s, e, m = open(os.path.join(d, 'time.txt')).read().split()[:4]
             log = open(os.path.join(d, 'log.pendularFoam')).read()
