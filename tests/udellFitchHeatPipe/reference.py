@@ -13,8 +13,10 @@ so that the two solve the same problem:
   reference: Somerton's), latent heat L(T) = 2.2564e6 + (1890 - 4200)
   (T - 373.15) J/kg with the IAPWS-97 saturation pressure (thermo 'iapws'
   of heatPipe.py; the solver: Wagner-Pruss, within 0.1 %), effective
-  vapour diffusivity tau D_wa = 1e-5 m2/s (the front does not depend on it:
-  heatPipe.py's sensitivity), M_w 0.018016, M_a 0.02897 kg/mol,
+  vapour diffusivity tau D_wa = 1e-5 m2/s (constant, as the solver's; the
+  reference's Millington-Quirk D_pm makes its front independent of it, a
+  constant one does not: 2.1157 m at 3e-6, 1.9890 m at 2e-5 m2/s, which
+  run checks the solver against), M_w 0.018016, M_a 0.02897 kg/mol,
   R 8.3144621.
 
 Prints the front x_f (S_e -> 0, S = S_wr), T there, the dry-zone
@@ -22,7 +24,7 @@ conductivity and the hot-end temperature T_h = T_f + q (L - x_f)/k_dry
 that carries q = 100 W/m2 through the dry zone of the 2.4 m column (the
 solver's hot end is at fixed T: pendularFoam's Newton residual conducts
 through a patch only where T is fixed), and writes the profile
-(x, S, T) to argv[1].
+(x, S, T) to argv[1]; argv[2], if given, replaces tau D_wa = 1e-5 m2/s.
 """
 import math
 import os
@@ -48,6 +50,10 @@ hp.Dpm = lambda Sw, T, pg: 1e-5
 
 
 def main():
+    # Optional second argument: the effective diffusivity tau D_wa [m2/s]
+    if len(sys.argv) > 2:
+        D = float(sys.argv[2])
+        hp.Dpm = lambda Sw, T, pg: D
     xf, err, h = hp.front()
     _, prof = hp.integrate(h, keep=True)
     Tf = prof[-1][4]
@@ -56,7 +62,7 @@ def main():
     print('REFERENCE front %.5f m (change at last halving %.1e m) '
           'T_front %.4f K k_dry %.5f W/(m K) T_hot %.4f K'
           % (xf, err, Tf, kDry, Th))
-    if len(sys.argv) > 1:
+    if len(sys.argv) > 1 and sys.argv[1]:
         with open(sys.argv[1], 'w') as out:
             out.write('x,S,T\n')
             for (xp, Se, pg, u, T) in prof:
