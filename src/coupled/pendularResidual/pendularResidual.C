@@ -5,6 +5,7 @@
 #include "pendularResidual.H"
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
+#include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
@@ -166,6 +167,39 @@ Foam::scalar Foam::pendularResidual::waterEulerCorrection
         c += V[celli]*((a0_ - 1)*x[3*celli + 2] - eulerHistory_[i]);
     }
     return returnReduce(c, sumOp<scalar>());
+}
+
+
+void Foam::pendularResidual::checkTemperatureConditions
+(
+    const volScalarField& T
+)
+{
+    forAll(T.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
+        const fvPatch& patch = Tp.patch();
+        if
+        (
+            patch.coupled()
+         || polyPatch::constraintType(patch.type())
+         || Tp.fixesValue()
+         || isA<zeroGradientFvPatchScalarField>(Tp)
+        )
+        {
+            continue;
+        }
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1, -1
+        )
+            << "Temperature condition '" << Tp.type() << "' on patch '"
+            << patch.name() << "' of " << T.objectPath() << ": the Newton"
+            << " engine (nonlinear { engine newton; }) conducts through a"
+            << " patch only where T is fixed; valid: a fixed-value type"
+            << " (fixedValue, uniformFixedValue, ...) or zeroGradient"
+            << " (insulated)" << exit(FatalIOError);
+    }
 }
 
 
