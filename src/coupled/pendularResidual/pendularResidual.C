@@ -5,6 +5,7 @@
 #include "pendularResidual.H"
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
+#include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
@@ -169,6 +170,39 @@ Foam::scalar Foam::pendularResidual::waterEulerCorrection
 }
 
 
+void Foam::pendularResidual::checkTemperatureConditions
+(
+    const volScalarField& T
+)
+{
+    forAll(T.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
+        const fvPatch& patch = Tp.patch();
+        if
+        (
+            patch.coupled()
+         || polyPatch::constraintType(patch.type())
+         || Tp.fixesValue()
+         || isA<zeroGradientFvPatchScalarField>(Tp)
+        )
+        {
+            continue;
+        }
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1, -1
+        )
+            << "Temperature condition '" << Tp.type() << "' on patch '"
+            << patch.name() << "' of " << T.objectPath() << ": the Newton"
+            << " engine (nonlinear { engine newton; }) conducts through a"
+            << " patch only where T is fixed; valid: a fixed-value type"
+            << " (fixedValue, uniformFixedValue, ...) or zeroGradient"
+            << " (insulated)" << exit(FatalIOError);
+    }
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::pendularResidual::pack
 (
     const scalarField& T,
@@ -297,8 +331,12 @@ void Foam::pendularResidual::flux
 {
     // pendularState::fluxes(): linear interpolation (owner weight w),
     // upwind carried values (owner where the flux is >= 0)
+    // With liquidFlow, times k_rg of the face (liquidFlow::krgFace: as
+    // k_rl, upwind of the gas pressure difference by default)
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
     const scalar KgByMu =
-        (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity();
+        (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity()
+       *(liquid ? liquid->krgFace(o.alpha, n.alpha, n.p - o.p, w) : 1);
     const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
     const scalar j =
         -medium_.vapourDiffusivity()*(w*o.rhoG + (1 - w)*n.rhoG)
@@ -420,7 +458,11 @@ void Foam::pendularResidual::boundaryFlux
         {
             // Outflow carries the cell's values (q > 0), inflow the
             // atmosphere's
-            const scalar q = -c.Kg/medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
+            // (with liquidFlow, k_rg of the cell: the face holds its S)
+            const liquidFlow* liquid = medium_.liquidFlowPtr();
+            const scalar q =
+               -c.Kg*(liquid ? liquid->krg(c.alpha) : 1)
+               /medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
             const scalar j =
                 -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;
