@@ -1,0 +1,241 @@
+#!/usr/bin/env python3
+"""wetHearthCoupled: the figures of the runs in run/ (see Allrun).
+
+For each run: the times at which T reaches 290 C (reddening) and 100 C at
+the sensors (interpolated between time steps), the 100 C plateau (time
+from 95 C to 105 C, as ../flatHearthPendular), the peak T at the sensors
+(flat hearth), the depths reached by TMax = 100 C and 290 C at the end of
+the fire (6 h) and at the end of the run (interpolated between cell
+centres), and for pendularFoam the largest relative water, air and energy
+imbalance of its log. For the runs expected to stop (alpha_l0 near 1),
+the time reached and the exit status.
+
+Writes results.txt (the tables of the README) and figures.csv (every
+figure at full precision, name,value,unit).
+"""
+
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht
+
+os.chdir(os.path.dirname(os.path.abspath(__file__)))
+
+HOUR = 3600.0
+figs = ht.Figures()
+out = []
+
+
+def say(s=''):
+    out.append(s)
+
+
+def balances(log):
+    """Largest |relative imbalance| of the water, air and energy balances
+    of a pendularFoam log (every block)."""
+    worst = {'water': 0.0, 'air': 0.0, 'energy': 0.0}
+    kind = None
+    with open(log) as f:
+        for line in f:
+            m = re.match(r'(Water|Air|Energy) balance at t', line)
+            if m:
+                kind = m.group(1).lower()
+                continue
+            m = re.search(r'imbalance\s+= \S+ \(relative (\S+)\)', line)
+            if m and kind:
+                worst[kind] = max(worst[kind], abs(float(m.group(1))))
+                kind = None
+    return worst
+
+
+def profile_at(case, t):
+    """(depth [cm], TMax [C]) down the column at time t"""
+    d = os.path.join(case, 'postProcessing', 'axisProfile', '%g' % t)
+    depth, f = ht.read_axis_set(d)
+    return depth, [x - ht.T0 for x in f['TMax']]
+
+
+def plateau(t, T):
+    """minutes from 95 C to 105 C (None if 105 C is not reached)"""
+    a, b = ht.crossing(t, T, 95.0), ht.crossing(t, T, 105.0)
+    return None if a is None or b is None else (b - a)/60.0
+
+
+def analyse(name, endTime, sensors, peaks):
+    """The figures of run/NAME; returns a dict of them"""
+    case = os.path.join('run', name)
+    s = ht.sensors_of(case)
+    t = s['time_s']
+    if abs(t[-1] - endTime) > 1e-6*endTime:
+        raise SystemExit('results.py: run/%s stopped at t = %g s, not %g'
+                         % (name, t[-1], endTime))
+    r = {}
+    for sen in sensors:
+        r['t290_' + sen] = ht.crossing(t, s['d' + sen], 290.0)
+        r['t100_' + sen] = ht.crossing(t, s['d' + sen], 100.0)
+        r['plateau_' + sen] = plateau(t, s['d' + sen])
+        if peaks:
+            r['peak_' + sen] = ht.peak(t, s['d' + sen])[0]
+    for key, time in (('6h', 21600.0), ('end', endTime)):
+        depth, TMax = profile_at(case, time)
+        r['d290_' + key] = ht.depth_reached(depth, TMax, 290.0)
+        r['d100_' + key] = ht.depth_reached(depth, TMax, 100.0)
+    for k, v in r.items():
+        if k.startswith('t'):
+            figs.add('%s.%s' % (name, k), None if v is None else v/HOUR, 'h')
+        elif k.startswith('plateau'):
+            figs.add('%s.%s' % (name, k), v, 'min')
+        elif k.startswith('peak'):
+            figs.add('%s.%s' % (name, k), v, 'C')
+        else:
+            figs.add('%s.%s' % (name, k), v, 'cm')
+    log = os.path.join(case, 'log.pendularFoam')
+    if os.path.exists(log):
+        for kind, v in balances(log).items():
+            r['balance_' + kind] = v
+            figs.add('%s.balance_%s' % (name, kind), v, '-')
+    else:
+        b = ht.energy_balance(os.path.join(case, 'log.ahcFoam'))
+        r['balance_energy'] = abs(b['relative'])
+        figs.add('%s.balance_energy' % name, r['balance_energy'], '-')
+        r['bottomLoss'] = -b['in_bottom']/b['in_fire']
+        figs.add('%s.bottomLoss' % name, 100*r['bottomLoss'], '%')
+    return r
+
+
+def fmt(v, spec):
+    return '-' if v is None or (isinstance(v, float) and math.isnan(v)) \
+        else spec % v
+
+
+def table(title, runs, rows):
+    """rows: (label, key, scale, format)"""
+    say(title)
+    say('| run | ' + ' | '.join(r[0] for r in rows) + ' |')
+    say('|---|' + '---|'*len(rows))
+    for label, r in runs:
+        say('| %s | ' % label + ' | '.join(
+            fmt(None if r.get(k) is None else r[k]*sc, f)
+            for _, k, sc, f in rows) + ' |')
+    say()
+
+
+nCells = int(open('run/nCells').read())
+say('wetHearthCoupled: 1-D column under the centre of the fire, %d cells'
+    % nCells)
+say()
+
+# ---- the flat hearth
+hearth = [('ahcFoam, saturated (alpha_l0 = 1)',
+           analyse('hearth_ahc_1', 86400.0, ('1.5cm', '2.5cm', '3.5cm'), True))]
+for a0 in ('0.3', '0.5'):
+    hearth.append(('ahcFoam, alpha_l0 = %s' % a0,
+                   analyse('hearth_ahc_' + a0, 86400.0,
+                           ('1.5cm', '2.5cm', '3.5cm'), True)))
+    for K in ('1e-14', '1e-16', '1e-18')[:3 if a0 == '0.3' else 2]:
+        hearth.append(('pendularFoam, alpha_l0 = %s, K = %s' % (a0, K),
+                       analyse('hearth_pend_%s_%s' % (a0, K), 86400.0,
+                               ('1.5cm', '2.5cm', '3.5cm'), True)))
+rowsT = [('290 C at %s [h]' % d, 't290_' + d, 1/HOUR, '%.2f')
+         for d in ('1.5cm', '2.5cm', '3.5cm')]
+rowsP = [('95-105 C at %s [min]' % d, 'plateau_' + d, 1, '%.1f')
+         for d in ('1.5cm', '2.5cm', '3.5cm')] \
+    + [('peak at %s [C]' % d, 'peak_' + d, 1, '%.1f')
+       for d in ('1.5cm', '2.5cm', '3.5cm')]
+rowsD = [('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f'),
+         ('TMax 290 C, 24 h [cm]', 'd290_end', 1, '%.2f'),
+         ('TMax 100 C, 6 h [cm]', 'd100_6h', 1, '%.2f'),
+         ('TMax 100 C, 24 h [cm]', 'd100_end', 1, '%.2f')]
+say('Flat hearth (../flatHearthAxi: phi = 0.15, 700 C for 6 h, 24 h)')
+say()
+table('Reddening times', hearth, rowsT)
+table('100 C plateau and peaks', hearth, rowsP)
+table('Depths reached', hearth, rowsD)
+
+# What vapour and liquid transport change: pendularFoam minus ahcFoam at
+# the same initial water
+for a0 in ('0.3', '0.5'):
+    ahc = dict(hearth)['ahcFoam, alpha_l0 = %s' % a0]
+    for K in ('1e-14', '1e-16', '1e-18')[:3 if a0 == '0.3' else 2]:
+        pend = dict(hearth)['pendularFoam, alpha_l0 = %s, K = %s' % (a0, K)]
+        for k, unit, sc in (('d290_6h', 'cm', 1), ('d290_end', 'cm', 1),
+                            ('t290_3.5cm', 'h', 1/HOUR)):
+            figs.add('hearth_pend_%s_%s.minusAhc.%s' % (a0, K, k),
+                     (pend[k] - ahc[k])*sc, unit)
+
+# The 1-D column against the axis of ../flatHearthAxi (its README's
+# figures, checked by tests/tutorialFlatHearthAxi): 1-D minus axisymmetric
+AXI = {'d290_6h': 3.58, 'd290_end': 3.71, 'd100_6h': 5.85, 'd100_end': 6.68}
+sat = hearth[0][1]
+say('1-D column minus the axis of ../flatHearthAxi (ahcFoam, saturated):')
+for k, v in AXI.items():
+    figs.add('axi.minus1D.' + k, sat[k] - v, 'cm')
+    say('  %s: %.2f cm (1-D %.2f, axisymmetric %.2f)' % (k, sat[k] - v, sat[k], v))
+say()
+
+rowsB = [('water', 'balance_water', 1, '%.1e'),
+         ('air', 'balance_air', 1, '%.1e'),
+         ('energy', 'balance_energy', 1, '%.1e')]
+table('Largest relative imbalance (every write)', hearth, rowsB)
+say('Heat out through the bottom (60 cm) in the saturated ahcFoam run: '
+    '%.2f %% of the heat in through the fire'
+    % (100*hearth[0][1]['bottomLoss']))
+say()
+
+# ---- the runs near saturation, expected to stop
+def stops(name, label):
+    """The run expected to stop: where it stopped"""
+    d = os.path.join('run', name)
+    status = int(open(os.path.join(d, 'status')).read())
+    with open(os.path.join(d, 'log.pendularFoam')) as f:
+        log = f.read()
+    times = re.findall(r'^Time = (\S+)', log, re.M)
+    reached = float(times[-1]) if times else 0.0
+    stopped = 'Nonlinear iterations failed' in log
+    say('  %s: %s at t = %.0f s (exit status %d)'
+        % (label, 'stops (Newton not converged, deltaT below minDeltaT)'
+           if stopped else 'still running after 60 s wall', reached,
+           status))
+    if stopped:
+        figs.add(name + '.stopsAt', reached, 's')
+
+
+say('pendularFoam near saturation (flat hearth, K = 1e-14 m2):')
+for a0 in ('0.9', '0.99', '0.999'):
+    stops('hearth_pend_%s_1e-14' % a0, 'alpha_l0 = ' + a0)
+say('pendularFoam, flat hearth, alpha_l0 = 0.5, K = 1e-18 m2:')
+stops('hearth_pend_0.5_1e-18', 'K = 1e-18')
+say()
+
+# ---- the pit
+pit = [('ahcFoam, saturated (alpha_l0 = 1)',
+        analyse('pit_ahc_1', 21600.0, ('2cm', '4cm'), False)),
+       ('ahcFoam, alpha_l0 = 0.5',
+        analyse('pit_ahc_0.5', 21600.0, ('2cm', '4cm'), False))]
+for K in ('1e-14', '1e-16'):
+    pit.append(('pendularFoam, alpha_l0 = 0.5, K = %s' % K,
+                analyse('pit_pend_0.5_' + K, 21600.0, ('2cm', '4cm'), False)))
+say('Wet pit (../pitDuration: phi = 0.10, 700 C from t = 0, 6 h)')
+say()
+table('Times and depth', pit,
+      [('290 C at 2 cm [h]', 't290_2cm', 1/HOUR, '%.2f'),
+       ('290 C at 4 cm [h]', 't290_4cm', 1/HOUR, '%.2f'),
+       ('100 C at 2 cm [h]', 't100_2cm', 1/HOUR, '%.2f'),
+       ('100 C at 4 cm [h]', 't100_4cm', 1/HOUR, '%.2f'),
+       ('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f')])
+table('Largest relative imbalance (every write)', pit, rowsB)
+ahc = pit[1][1]
+for K, (_, pend) in zip(('1e-14', '1e-16'), pit[2:]):
+    for k in ('t290_2cm', 't290_4cm'):
+        figs.add('pit_pend_0.5_%s.minusAhc.%s' % (K, k), (pend[k] - ahc[k])/HOUR, 'h')
+say('pendularFoam, pit, alpha_l0 = 0.5, K = 1e-18 m2:')
+stops('pit_pend_0.5_1e-18', 'K = 1e-18')
+say()
+
+open('results.txt', 'w').write('\n'.join(out) + '\n')
+figs.write('figures.csv')
+print('\n'.join(out))
