@@ -309,8 +309,12 @@ void Foam::pendularResidual::flux
 {
     // pendularState::fluxes(): linear interpolation (owner weight w),
     // upwind carried values (owner where the flux is >= 0)
+    // With liquidFlow, times k_rg of the face (liquidFlow::krgFace: as
+    // k_rl, upwind of the gas pressure difference by default)
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
     const scalar KgByMu =
-        (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity();
+        (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity()
+       *(liquid ? liquid->krgFace(o.alpha, n.alpha, n.p - o.p, w) : 1);
     const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
     const scalar j =
         -medium_.vapourDiffusivity()*(w*o.rhoG + (1 - w)*n.rhoG)
@@ -432,7 +436,11 @@ void Foam::pendularResidual::boundaryFlux
         {
             // Outflow carries the cell's values (q > 0), inflow the
             // atmosphere's
-            const scalar q = -c.Kg/medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
+            // (with liquidFlow, k_rg of the cell: the face holds its S)
+            const liquidFlow* liquid = medium_.liquidFlowPtr();
+            const scalar q =
+               -c.Kg*(liquid ? liquid->krg(c.alpha) : 1)
+               /medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
             const scalar j =
                 -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;

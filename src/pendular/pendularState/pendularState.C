@@ -7,6 +7,7 @@
 #include "temperatureCheck.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
 #include "waterModel.H"
+#include "liquidFlow.H"
 #include "fvc.H"
 #include "upwind.H"
 #include "fixedValueFvPatchFields.H"
@@ -458,7 +459,55 @@ void Foam::pendularState::fluxes()
     // constraint patches but heat by conduction.
     const surfaceScalarField KgByMuf(fvc::interpolate(Kg_)/muGas_);
     const surfaceScalarField magSf(mesh_.magSf());
-    q_ = -KgByMuf*fvc::snGrad(p_)*magSf;
+    const surfaceScalarField snGradP(fvc::snGrad(p_));
+    q_ = -KgByMuf*snGradP*magSf;
+
+    // With liquidFlow, times the gas's relative permeability k_rg(alpha_l)
+    // of a face as pendularResidual takes it (liquidFlow::krgFace: upwind
+    // of the pressure difference or arithmetic on internal and processor
+    // faces, the cell's on the other patches)
+    if (const liquidFlow* liquid = medium_.liquidFlowPtr())
+    {
+        const labelUList& own = mesh_.owner();
+        const labelUList& nei = mesh_.neighbour();
+        const surfaceScalarField& w = mesh_.weights();
+        forAll(own, facei)
+        {
+            q_[facei] *=
+                liquid->krgFace
+                (
+                    alphaL_[own[facei]], alphaL_[nei[facei]],
+                    snGradP[facei], w[facei]
+                );
+        }
+        forAll(q_.boundaryField(), patchi)
+        {
+            const fvPatch& patch = mesh_.boundary()[patchi];
+            const scalarField inside
+            (
+                alphaL_.boundaryField()[patchi].patchInternalField()
+            );
+            const scalarField across
+            (
+                patch.coupled()
+              ? alphaL_.boundaryField()[patchi].patchNeighbourField()
+              : alphaL_.boundaryField()[patchi].patchInternalField()
+            );
+            scalarField& qp = q_.boundaryFieldRef()[patchi];
+            forAll(qp, i)
+            {
+                qp[i] *=
+                    patch.coupled()
+                  ? liquid->krgFace
+                    (
+                        inside[i], across[i],
+                        snGradP.boundaryField()[patchi][i],
+                        w.boundaryField()[patchi][i]
+                    )
+                  : liquid->krg(inside[i]);
+            }
+        }
+    }
 
     const surfaceScalarField j
     (

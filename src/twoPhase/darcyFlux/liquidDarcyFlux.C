@@ -80,10 +80,7 @@ Foam::scalar Foam::liquidDarcyFlux::massFlux
     // The potential difference driving the flow from o to n
     const scalar dPhi = (n.pg - o.pg) - (n.pc - o.pc) - rhol_*(g_ & d);
     const scalar Kf = 1/((1 - w)/o.K + w/n.K);
-    const scalar krf =
-        scheme_ == krlInterpolation::upwind
-      ? (dPhi <= 0 ? o.krl : n.krl)
-      : w*o.krl + (1 - w)*n.krl;
+    const scalar krf = faceValue(o.krl, n.krl, dPhi, w);
     return -rhol_*Kf*krf/mul_*magSf*delta*dPhi;
 }
 
