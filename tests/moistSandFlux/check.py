@@ -233,7 +233,15 @@ if __name__ == '__main__':
                            zip(fig['q25_200'][t]['T'],
                                fig['q25_100'][t]['T']))))
 
-    # 7. the README's figures
+    # 7. the README's figures (README.md, pendularFoam's 'Condensation
+    # ahead of the drying front'): computed, and printed there
+    readme = open(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                               '..', '..', 'README.md')).read()
+    i = readme.index('- **Condensation ahead of the drying front**')
+    text = readme[i:readme.index('\n- **', i + 1)]
+    words = set(re.findall(r'[-+]?[0-9][0-9.e-]*', ' '.join(text.split())))
     for name, value, tol, got in readme_figures(fig, ahc):
         c.le('README: %s = %g' % (name, value), abs(got - value), tol)
+        c.true('README: %g printed' % value,
+               '%g' % value in words or '+%g' % value in words)
     c.done()
