@@ -141,7 +141,7 @@ README = [
     ('no liquid flow: water 30 min [kg/m2]', 'noLiquid_100', 1800, 'excess',
      1.38, 0.005),
     ('T(1 cm) - ahcFoam 30 min [K]', 'q25_100', 1800, 'T0', -45.2, 0.05),
-    ('T(10 cm) - ahcFoam 30 min [K]', 'q25_100', 1800, 'T3', 11.15, 0.005),
+    ('T(10 cm) - ahcFoam 30 min [K]', 'q25_100', 1800, 'T3', 11.1, 0.05),
     ('T(5 cm) - ahcFoam 15 min [K]', 'q25_100', 900, 'T2', 31.2, 0.05),
 ]
 

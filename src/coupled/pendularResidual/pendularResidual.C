@@ -276,7 +276,9 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
     if (isA<surfaceHeatLossFvPatchScalarField>(Tp))
     {
         // The surface temperature balancing the condition's exact flux
-        // with the half cell's conduction (as pendularState::update)
+        // with the half cell's conduction (as pendularState::update), not
+        // the condition's value (a mixed condition 'fixes' it: Tp[i],
+        // from the last evaluation, would lag over the iterations)
         b.T =
             refCast<const surfaceHeatLossFvPatchScalarField>(Tp)
            .wallTemperature
