@@ -82,6 +82,18 @@ void Foam::surfaceHeatLossFvPatchScalarField::values
 }
 
 
+Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::imposedFlux() const
+{
+    if (!heatFlux_.valid())
+    {
+        return 0;
+    }
+    const scalar q = heatFlux_->value(db().time().timeOutputValue());
+    checkRange("heatFlux", q, checkedRead::closed(0, 1e7), true);
+    return q;
+}
+
+
 const Foam::scalarField&
 Foam::surfaceHeatLossFvPatchScalarField::kappa() const
 {
@@ -133,6 +145,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     h_(),
     Tair_(),
     Tsky_(),
+    heatFlux_(),
     emissivity_(0),
     kappaName_("kappa"),
     dictName_(iF.objectPath())
@@ -154,6 +167,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     h_(),
     Tair_(),
     Tsky_(),
+    heatFlux_(),
     emissivity_(0),
     kappaName_(dict.getOrDefault<word>("kappa", "kappa")),
     dictName_(dict.name())
@@ -170,6 +184,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
         allowed.append(checkedRead::function1Keywords(dict, "h"));
         allowed.append(checkedRead::function1Keywords(dict, "Tair"));
         allowed.append(checkedRead::function1Keywords(dict, "Tsky"));
+        allowed.append(checkedRead::function1Keywords(dict, "heatFlux"));
         allowed.append(wordList({"emissivity", "kappa"}));
         checkedRead::checkKeywords
         (
@@ -187,6 +202,10 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     {
         Tsky_ = Function1<scalar>::New("Tsky", dict);
     }
+    if (dict.found("heatFlux"))
+    {
+        heatFlux_ = Function1<scalar>::New("heatFlux", dict);
+    }
     // (a finite number, then its range in the words of this condition)
     emissivity_ =
         checkedRead::getOrDefault
@@ -200,6 +219,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     // Range of the Function1s at the start time
     scalar h, Tair, Tsky;
     values(h, Tair, Tsky);
+    imposedFlux();
 
     if (dict.found("value"))
     {
@@ -240,6 +260,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     h_(ptf.h_.clone()),
     Tair_(ptf.Tair_.clone()),
     Tsky_(ptf.Tsky_.clone()),
+    heatFlux_(ptf.heatFlux_.clone()),
     emissivity_(ptf.emissivity_),
     kappaName_(ptf.kappaName_),
     dictName_(ptf.dictName_)
@@ -255,6 +276,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     h_(ptf.h_.clone()),
     Tair_(ptf.Tair_.clone()),
     Tsky_(ptf.Tsky_.clone()),
+    heatFlux_(ptf.heatFlux_.clone()),
     emissivity_(ptf.emissivity_),
     kappaName_(ptf.kappaName_),
     dictName_(ptf.dictName_)
@@ -271,6 +293,7 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     h_(ptf.h_.clone()),
     Tair_(ptf.Tair_.clone()),
     Tsky_(ptf.Tsky_.clone()),
+    heatFlux_(ptf.heatFlux_.clone()),
     emissivity_(ptf.emissivity_),
     kappaName_(ptf.kappaName_),
     dictName_(ptf.dictName_)
@@ -289,7 +312,49 @@ Foam::surfaceHeatLossFvPatchScalarField::heatFlux() const
         emissivity_*constant::physicoChemical::sigma.value();
     const scalarField& Tw = *this;
 
-    return h*(Tair - Tw) + epsSigma*(pow4(Tsky) - pow4(Tw));
+    return
+        imposedFlux() + h*(Tair - Tw) + epsSigma*(pow4(Tsky) - pow4(Tw));
+}
+
+
+Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::wallTemperature
+(
+    const scalar Tc,
+    const scalar kappaDelta
+) const
+{
+    scalar h, Tair, Tsky;
+    values(h, Tair, Tsky);
+    const scalar qs = imposedFlux();
+    const scalar epsSigma =
+        emissivity_*constant::physicoChemical::sigma.value();
+
+    // g(T_w) = kappaDelta (T_w - T_c) - q(T_w) = (kappaDelta + h) T_w
+    // + eps sigma T_w^4 - const: increasing and convex for T_w > 0, so
+    // Newton from a point where g >= 0 decreases monotonically to the
+    // root; the root without the T_w^4 term is one (g = eps sigma T_w^4)
+    scalar Tw =
+        (kappaDelta*Tc + qs + h*Tair + epsSigma*pow4(Tsky))/(kappaDelta + h);
+    for (label iter = 0; iter < 100; ++iter)
+    {
+        const scalar g =
+            kappaDelta*(Tw - Tc)
+          - (qs + h*(Tair - Tw) + epsSigma*(pow4(Tsky) - pow4(Tw)));
+        const scalar dg = kappaDelta + h + 4*epsSigma*pow3(Tw);
+        const scalar dTw = g/dg;
+        Tw -= dTw;
+        if (mag(dTw) <= 1e-12*Tw)
+        {
+            return Tw;
+        }
+    }
+    FatalErrorInFunction
+        << "Boundary condition " << type() << " on patch '"
+        << patch().name() << "' of field " << internalField().name()
+        << ": no surface temperature balancing the flux after 100 Newton"
+        << " iterations (T_c = " << Tc << " K, k delta = " << kappaDelta
+        << " W/m2/K)" << nl << exit(FatalError);
+    return Tw;
 }
 
 
@@ -334,7 +399,7 @@ void Foam::surfaceHeatLossFvPatchScalarField::updateCoeffs()
         }
     }
 
-    refGrad() = Zero;
+    refGrad() = imposedFlux()/kappap;
 
     mixedFvPatchScalarField::updateCoeffs();
 }
@@ -348,6 +413,10 @@ void Foam::surfaceHeatLossFvPatchScalarField::write(Ostream& os) const
     if (Tsky_.valid())
     {
         Tsky_->writeData(os);
+    }
+    if (heatFlux_.valid())
+    {
+        heatFlux_->writeData(os);
     }
     os.writeEntry("emissivity", emissivity_);
     os.writeEntryIfDifferent<word>("kappa", "kappa", kappaName_);

@@ -10,6 +10,7 @@
 #include "waterModel.H"
 #include "liquidFlow.H"
 #include "pendularNewton.H"
+#include "surfaceHeatLossFvPatchScalarField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -306,6 +307,19 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
 
     cellState b(c);
     b.T = Tp.fixesValue() ? Tp[i] : c.T;
+    if (isA<surfaceHeatLossFvPatchScalarField>(Tp))
+    {
+        // The surface temperature balancing the condition's exact flux
+        // with the half cell's conduction (as pendularState::update), not
+        // the condition's value (a mixed condition 'fixes' it: Tp[i],
+        // from the last evaluation, would lag over the iterations)
+        b.T =
+            refCast<const surfaceHeatLossFvPatchScalarField>(Tp)
+           .wallTemperature
+            (
+                c.T, c.kappa*fvMesh_.boundary()[patchi].deltaCoeffs()[i]
+            );
+    }
     b.p = pp.fixesValue() ? pp[i] : c.p;
     b.pw = pwp.fixesValue() ? pwp[i] : pwc;
     b.pa = b.p - b.pw;

@@ -5,6 +5,7 @@
 #include "pendularState.H"
 #include "checkedRead.H"
 #include "temperatureCheck.H"
+#include "surfaceHeatLossFvPatchScalarField.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
 #include "fvc.H"
@@ -338,6 +339,34 @@ void Foam::pendularState::update()
     Kg_.correctBoundaryConditions();
     kappa_.correctBoundaryConditions();
 
+    // Surface heat loss/flux: the surface temperature balancing the
+    // condition's exact (nonlinear) flux with the half cell's conduction
+    // (pendularResidual::boundaryState), not its linearisation
+    forAll(T_.boundaryField(), patchi)
+    {
+        if (isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi]))
+        {
+            const surfaceHeatLossFvPatchScalarField& Tp =
+                refCast<const surfaceHeatLossFvPatchScalarField>
+                (
+                    T_.boundaryField()[patchi]
+                );
+            const labelUList& cells = mesh_.boundary()[patchi].faceCells();
+            const scalarField& delta = mesh_.boundary()[patchi].deltaCoeffs();
+            scalarField Tw(Tp.size());
+            forAll(Tw, facei)
+            {
+                const label celli = cells[facei];
+                Tw[facei] =
+                    Tp.wallTemperature
+                    (
+                        T_[celli], kappa_[celli]*delta[facei]
+                    );
+            }
+            T_.boundaryFieldRef()[patchi] == Tw;
+        }
+    }
+
     // Boundary values of the derived fields (coupled patches: neighbours)
     pa_.boundaryFieldRef() = p_.boundaryField() - pw_.boundaryField();
     rhoW_.boundaryFieldRef() = Mw*pw_.boundaryField()/(R*T_.boundaryField());
@@ -405,6 +434,20 @@ Foam::tmp<Foam::surfaceScalarField> Foam::pendularState::upwindFaces
         }
     }
     return tsf;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::pendularState::conductionGradient
+(
+    const label patchi
+) const
+{
+    const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+    if (isA<surfaceHeatLossFvPatchScalarField>(Tp))
+    {
+        return (Tp - Tp.patchInternalField())*Tp.patch().deltaCoeffs();
+    }
+    return Tp.snGrad();
 }
 
 
@@ -479,6 +522,20 @@ void Foam::pendularState::fluxes()
       + Fa_*upwindFaces(hA_, Fa_)
       + Fw_*upwindFaces(hW_, Fw_);
 
+    // Conduction through a surfaceHeatLoss patch: from the surface
+    // temperature update() set (the condition's snGrad is its
+    // linearisation's)
+    forAll(T_.boundaryField(), patchi)
+    {
+        if (isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi]))
+        {
+            FE_.boundaryFieldRef()[patchi] +=
+                kappa_.boundaryField()[patchi]
+               *(T_.boundaryField()[patchi].snGrad() - conductionGradient(patchi))
+               *magSf.boundaryField()[patchi];
+        }
+    }
+
     forAll(kind_, patchi)
     {
         if (kind_[patchi] == patchKind::semiPermeable)
@@ -508,7 +565,7 @@ void Foam::pendularState::fluxes()
             scalarField& FEp = FE_.boundaryFieldRef()[patchi];
             FEp =
                -kappa_.boundaryField()[patchi]
-               *T_.boundaryField()[patchi].snGrad()
+               *conductionGradient(patchi)
                *magSf.boundaryField()[patchi];
             forAll(jp, facei)
             {
@@ -534,7 +591,7 @@ void Foam::pendularState::fluxes()
             // Conduction only
             FE_.boundaryFieldRef()[patchi] =
                -kappa_.boundaryField()[patchi]
-               *T_.boundaryField()[patchi].snGrad()
+               *conductionGradient(patchi)
                *magSf.boundaryField()[patchi];
         }
     }
