@@ -8,7 +8,6 @@
 #include "syncTools.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
-#include "pendularNewton.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -131,7 +130,7 @@ void Foam::pendularResidual::bdf2
         (
             H < 0
          && WOlder[celli]
-          < pendularNewton::kinkWater(medium_, phi[celli], Tn_[celli])
+          < medium_.kinkWater(phi[celli], Tn_[celli])
         )
         {
             // W >= 0 out of reach: backward Euler for this water
