@@ -16,6 +16,7 @@
 #include "ISstream.H"
 #include "OSspecific.H"
 #include "Pstream.H"
+#include "stringOps.H"
 
 #include <cctype>
 #include <cfenv>
@@ -78,12 +79,104 @@ void missingKeyword
 }
 
 
+//- Holds the floating-point environment (traps and flags) and OpenFOAM's
+//  global input mode while a file is parsed; restores both when it goes
+//  out of scope, also when the parse throws (FatalIOError throws when
+//  throwExceptions() is set, as in hearthFit's forward runs). A number
+//  that overflows (1e400) raises FE_OVERFLOW in strtod, which OpenFOAM
+//  traps (SIGFPE): the traps are held (the inf read is then refused by
+//  checkNumbers, or by the reader of the entry). std::feholdexcept/fesetenv
+//  rather than OpenFOAM's sigFpe::ignore: they restore the environment as
+//  it was (whoever enabled the traps, e.g. a unit test) and clear the
+//  parse's overflow flag, which sigFpe::ignore leaves raised when it
+//  enables the traps again. An #inputMode directive of the file sets the
+//  global input mode: restored, as OpenFOAM's top-level reads do.
+class parseGuard
+{
+    std::fenv_t fenv_;
+    const Foam::entry::inputMode mode_;
+
+public:
+
+    parseGuard()
+    :
+        mode_(Foam::entry::globalInputMode)
+    {
+        std::feholdexcept(&fenv_);
+    }
+
+    ~parseGuard()
+    {
+        Foam::entry::globalInputMode = mode_;
+        std::fesetenv(&fenv_);
+    }
+
+    parseGuard(const parseGuard&) = delete;
+    void operator=(const parseGuard&) = delete;
+};
+
+
+void readScope
+(
+    Foam::dictionary& d,
+    Foam::ISstream& is,
+    const bool sub,
+    const Foam::fileName& file,
+    const Foam::string& scope
+);
+
+
+//- #include "file" (mandatory) or #includeIfPresent "file" read from is
+//  into d: the file named as OpenFOAM's includeEntry names it ($variables
+//  and environment expanded, relative to the including file's directory)
+//  and read by readScope, so that a keyword given twice in the included
+//  file is refused in that file's name (recursively: its own #includes
+//  likewise)
+void includeFile
+(
+    Foam::dictionary& d,
+    Foam::ISstream& is,
+    const bool mandatory,
+    const Foam::string& scope
+)
+{
+    using namespace Foam;
+    fileName name(is);
+    stringOps::inplaceExpand(name, d, true, true);
+    if (!name.empty() && !name.isAbsolute())
+    {
+        name = is.name().path()/name;
+    }
+    IFstream ifs(name);
+    if (!ifs.good())
+    {
+        if (mandatory)
+        {
+            FatalIOErrorInFunction(is)
+                << "Cannot open include file " << name
+                << " while reading dictionary " << d.name()
+                << exit(FatalIOError);
+        }
+        return;
+    }
+    // An included file's FoamFile header is not an entry (as in OpenFOAM)
+    const bool header = d.found("FoamFile", keyType::LITERAL);
+    readScope(d, ifs, false, ifs.name(), scope);
+    if (!header)
+    {
+        d.remove("FoamFile");
+    }
+}
+
+
 //- Read the entries of d from is, up to its closing '}' (sub) or the end
-//  of the file, as dictionary::read does (entry::New for the directives,
-//  #include ..., and the $substitutions) but refusing a keyword written
-//  twice in one scope: FatalIOError naming the file, the keyword, the
-//  scope and both lines. An entry brought in by #include or $sub may be
-//  overridden, as in OpenFOAM (only the file's own lines are compared)
+//  of the file, as dictionary::read does (entry::New for the directives
+//  and the $substitutions; #include and #includeIfPresent by includeFile)
+//  but refusing a keyword written twice in one scope: FatalIOError naming
+//  the file, the keyword, the scope and both lines. An entry brought in by
+//  #include or $sub may be overridden, as in OpenFOAM (only the lines of
+//  one file are compared), and a keyword removed by #remove may be set
+//  again
 void readScope
 (
     Foam::dictionary& d,
@@ -142,6 +235,18 @@ void readScope
         {
             key = tok.stringToken();
         }
+        if
+        (
+            tok.isWord()
+         && (
+                tok.wordToken() == "#include"
+             || tok.wordToken() == "#includeIfPresent"
+            )
+        )
+        {
+            includeFile(d, is, tok.wordToken() == "#include", scope);
+            continue;
+        }
         if (!plain || key.find('/') != std::string::npos)
         {
             is.putBack(tok);
@@ -154,6 +259,14 @@ void readScope
             )
             {
                 return;
+            }
+            // A keyword the directive removed (#remove) may be set again
+            for (const word& k : lines.toc())
+            {
+                if (!d.found(k, keyType::LITERAL))
+                {
+                    lines.erase(k);
+                }
             }
             continue;
         }
@@ -573,18 +686,10 @@ Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
     dictionary dict;
     dict.name() = is.name();
 
-    // A number that overflows (1e400) raises FE_OVERFLOW in strtod, which
-    // OpenFOAM traps (SIGFPE): the traps are held while the file is parsed
-    // (the inf read is then refused by checkNumbers, or by the reader of
-    // the entry)
-    // (an #inputMode directive of the file sets OpenFOAM's global input
-    // mode: restored after it, as OpenFOAM's top-level reads do)
-    std::fenv_t fenv;
-    std::feholdexcept(&fenv);
-    const entry::inputMode mode = entry::globalInputMode;
-    readScope(dict, is, false, dict.name(), "");
-    entry::globalInputMode = mode;
-    std::fesetenv(&fenv);
+    {
+        const parseGuard guard;     // traps and input mode, restored
+        readScope(dict, is, false, dict.name(), "");
+    }
 
     dict.remove("FoamFile");
     return dict;

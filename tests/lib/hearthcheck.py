@@ -115,6 +115,17 @@ def erfc_solution(z, t, T0, Tw, alpha):
     return T0 + (Tw - T0)*math.erfc(z/(2.0*math.sqrt(alpha*t)))
 
 
+def gardner_head(z, a, e_over_ks, s_b=1.0):
+    """Pressure head h [m] at height z [m] of Gardner's (1958) steady
+    evaporation at the rate E through an exponential soil, K = K_s exp(a h),
+    S_e = exp(a h), from S_e = s_b at z = 0 (s_b = 1: a water table):
+    Darcy's flux -K (dh/dz + 1) = E integrates to
+        exp(a h(z)) = (s_b + E/K_s) exp(-a z) - E/K_s
+    (defined for z < ln(1 + s_b K_s/E)/a; tests/richardsGardner/README.md
+    eq. 4 derives the water-table form). S_e(z) = exp(a h(z))."""
+    return math.log((s_b + e_over_ks)*math.exp(-a*z) - e_over_ks)/a
+
+
 class NeumannStefan:
     """Two-phase Neumann solution: semi-infinite solid at T0 < Tf, wall held
     at Tw > Tf, melting front xi = 2 lam sqrt(alpha_l t). The transcendental

@@ -31,26 +31,6 @@ Foam::pendularNewton::pendularNewton
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::pendularNewton::kinkWater
-(
-    const pendularMedium& medium,
-    const scalar phi,
-    const scalar T
-)
-{
-    if (!(T >= medium.minimumTemperature() && T < GREAT))
-    {
-        return 0;
-    }
-    const pendularMedium::saturationState sat = medium.saturation(T);
-    if (sat.liquidFree)
-    {
-        return 0;
-    }
-    return phi*medium.Mw()*sat.pSat/(medium.R()*T);
-}
-
-
 bool Foam::pendularNewton::solveCellWater
 (
     const pendularResidual& res,
@@ -146,7 +126,7 @@ Foam::label Foam::pendularNewton::localWaterSolves
     label nLocal = 0;
     for (label c = 0; c < x.size()/3; ++c)
     {
-        const scalar Wk = kinkWater(medium, phi[c], x[3*c]);
+        const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
         if
         (
             Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
@@ -209,7 +189,7 @@ bool Foam::pendularNewton::chordStep
     for (label c = 0; c < nCells && plain; ++c)
     {
         const scalar W = x[3*c + 2] + dx[3*c + 2];
-        const scalar Wk = kinkWater(medium, phi[c], x[3*c] + dx[3*c]);
+        const scalar Wk = medium.kinkWater(phi[c], x[3*c] + dx[3*c]);
         plain =
             std::isfinite(dx[3*c]) && std::isfinite(dx[3*c + 1])
          && std::isfinite(W) && W >= dryingFactor_*x[3*c + 2]
@@ -417,7 +397,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             const scalar W = x[3*c + 2] + dx[3*c + 2];
             // A wet cell's step across its kink (at the new T): to the
             // kink
-            const scalar Wk = kinkWater(medium, phi[c], x[3*c]);
+            const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
             if (Wk > 0 && W < Wk && Wk < x[3*c + 2])
             {
                 ++nProjected;

@@ -9,7 +9,6 @@
 #include "syncTools.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
-#include "pendularNewton.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -133,7 +132,7 @@ void Foam::pendularResidual::bdf2
         (
             H < 0
          && WOlder[celli]
-          < pendularNewton::kinkWater(medium_, phi[celli], Tn_[celli])
+          < medium_.kinkWater(phi[celli], Tn_[celli])
         )
         {
             // W >= 0 out of reach: backward Euler for this water

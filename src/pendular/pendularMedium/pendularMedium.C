@@ -268,6 +268,25 @@ Foam::pendularMedium::saturation(const scalar T) const
 }
 
 
+Foam::scalar Foam::pendularMedium::kinkWater
+(
+    const scalar phi,
+    const scalar T
+) const
+{
+    if (!(T >= minimumTemperature_ && T < GREAT))
+    {
+        return 0;
+    }
+    const saturationState sat = saturation(T);
+    if (sat.liquidFree)
+    {
+        return 0;
+    }
+    return phi*Mw()*sat.pSat/(R()*T);
+}
+
+
 Foam::scalar Foam::pendularMedium::saturationPressure(const scalar T) const
 {
     if (std::isnan(T) || T < minimumTemperature_)
