@@ -10,6 +10,7 @@
 #include "waterModel.H"
 #include "liquidFlow.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
+#include "mixedFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -183,7 +184,8 @@ void Foam::pendularResidual::checkTemperatureConditions
         (
             patch.coupled()
          || polyPatch::constraintType(patch.type())
-         || Tp.fixesValue()
+         || isA<surfaceHeatLossFvPatchScalarField>(Tp)
+         || (Tp.fixesValue() && !isA<mixedFvPatchScalarField>(Tp))
          || isA<zeroGradientFvPatchScalarField>(Tp)
         )
         {
@@ -196,9 +198,10 @@ void Foam::pendularResidual::checkTemperatureConditions
             << "Temperature condition '" << Tp.type() << "' on patch '"
             << patch.name() << "' of " << T.objectPath() << ": the Newton"
             << " engine (nonlinear { engine newton; }) conducts through a"
-            << " patch only where T is fixed; valid: a fixed-value type"
-            << " (fixedValue, uniformFixedValue, ...) or zeroGradient"
-            << " (insulated)" << exit(FatalIOError);
+            << " patch only where T is fixed or where surfaceHeatLoss gives"
+            << " the surface balance; valid: a fixed-value type (fixedValue,"
+            << " uniformFixedValue, fireTemperature, ...), surfaceHeatLoss"
+            << " or zeroGradient (insulated)" << exit(FatalIOError);
     }
 }
 
