@@ -46,9 +46,11 @@ Description
                             maxDeltaTemperature, maxDeltaTGrowth
         system/fvSolution:  nonlinear { engine; maxIter; TTol; pTol;
                             WTol; balanceTolerance; strictBalance; }
-    engine: segregated (default, the iterations above) or newton (Newton
-    on the coupled balances of a sub-step: src/coupled pendularNewton, its
-    linear solver set by fvSolution's optional 'coupled' dictionary).
+    engine: newton (Newton on the coupled balances of a sub-step:
+    src/coupled pendularNewton, its linear solver set by fvSolution's
+    optional 'coupled' dictionary; the default for model A) or segregated
+    (the iterations above; the default for model B, which the Newton
+    engine does not solve).
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
