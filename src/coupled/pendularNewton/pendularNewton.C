@@ -351,6 +351,10 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
          && (
                 (rMax < 1 && uMax < 1)
              || (rMax < floorFactor_ && uMax < 1e-2)
+             || (
+                    rMax < stallFactor_ && uMax < 1e-2
+                 && max(uPrev[0], max(uPrev[1], uPrev[2])) < 1e-2
+                )
              || (iter > 1 && nModifiedPrev == 0 && rMax < 1 && eMax < 1)
             )
         )
