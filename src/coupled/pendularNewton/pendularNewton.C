@@ -295,6 +295,8 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     label nModifiedPrev = 1;
     // The first iterate's largest scaled residual (divergence test)
     scalar rFirst = GREAT;
+    // The last iterate's (stall test)
+    scalar rPrev = 0;
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
@@ -352,7 +354,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 (rMax < 1 && uMax < 1)
              || (rMax < floorFactor_ && uMax < 1e-2)
              || (
-                    rMax < stallFactor_ && uMax < 1e-2
+                    rMax < stallFactor_ && rMax > 0.5*rPrev && uMax < 1e-2
                  && max(uPrev[0], max(uPrev[1], uPrev[2])) < 1e-2
                 )
              || (iter > 1 && nModifiedPrev == 0 && rMax < 1 && eMax < 1)
@@ -370,6 +372,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         {
             return out;
         }
+        rPrev = rMax;
         if (iter == 0)
         {
             rFirst = rMax;
