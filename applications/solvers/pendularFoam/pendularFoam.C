@@ -70,6 +70,7 @@ Description
 #include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
+#include "mixedFvPatchFields.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
 
