@@ -46,9 +46,13 @@ Description
                             maxDeltaTemperature, maxDeltaTGrowth
         system/fvSolution:  nonlinear { engine; maxIter; TTol; pTol;
                             WTol; balanceTolerance; strictBalance; }
-    engine: segregated (default, the iterations above) or newton (Newton
-    on the coupled balances of a sub-step: src/coupled pendularNewton, its
-    linear solver set by fvSolution's optional 'coupled' dictionary).
+    engine: newton (Newton on the coupled balances of a sub-step:
+    src/coupled pendularNewton, its linear solver set by fvSolution's
+    optional 'coupled' dictionary; the default for model A) or segregated
+    (the iterations above; the default for model B, which the Newton
+    engine does not solve, on a non-orthogonal mesh, where its fluxes
+    lack the correction, and with a mixed boundary condition of T, p or
+    pw, which its residual holds at the sub-step's start: createNewton.H).
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
@@ -67,6 +71,7 @@ Description
 #include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
+#include "mixedFvPatchFields.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
 
