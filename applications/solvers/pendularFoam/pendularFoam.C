@@ -52,7 +52,8 @@ Description
     (the iterations above; the default for model B, which the Newton
     engine does not solve, on a non-orthogonal mesh, where its fluxes
     lack the correction, and with a mixed boundary condition of T, p or
-    pw, which its residual holds at the sub-step's start: createNewton.H).
+    pw other than surfaceHeatLoss on T, which its residual would hold at
+    its last evaluated value: createNewton.H).
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
@@ -72,6 +73,7 @@ Description
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
 #include "mixedFvPatchFields.H"
+#include "surfaceHeatLossFvPatchScalarField.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
 
