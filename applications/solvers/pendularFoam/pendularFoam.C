@@ -72,8 +72,6 @@ Description
 #include "temperatureCheck.H"
 #include "upwind.H"
 #include "gaussConvectionScheme.H"
-#include "mixedFvPatchFields.H"
-#include "surfaceHeatLossFvPatchScalarField.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
 

@@ -171,6 +171,22 @@ Foam::scalar Foam::pendularResidual::waterEulerCorrection
 }
 
 
+bool Foam::pendularResidual::followsCondition(const fvPatchScalarField& pf)
+{
+    return
+        isA<surfaceHeatLossFvPatchScalarField>(pf)
+     || (
+            !isA<mixedFvPatchScalarField>(pf)
+         && (
+                pf.coupled()
+             || polyPatch::constraintType(pf.patch().type())
+             || pf.fixesValue()
+             || isA<zeroGradientFvPatchScalarField>(pf)
+            )
+        );
+}
+
+
 void Foam::pendularResidual::checkTemperatureConditions
 (
     const volScalarField& T
@@ -179,15 +195,7 @@ void Foam::pendularResidual::checkTemperatureConditions
     forAll(T.boundaryField(), patchi)
     {
         const fvPatchScalarField& Tp = T.boundaryField()[patchi];
-        const fvPatch& patch = Tp.patch();
-        if
-        (
-            patch.coupled()
-         || polyPatch::constraintType(patch.type())
-         || isA<surfaceHeatLossFvPatchScalarField>(Tp)
-         || (Tp.fixesValue() && !isA<mixedFvPatchScalarField>(Tp))
-         || isA<zeroGradientFvPatchScalarField>(Tp)
-        )
+        if (followsCondition(Tp))
         {
             continue;
         }
@@ -196,12 +204,13 @@ void Foam::pendularResidual::checkTemperatureConditions
             FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1, -1
         )
             << "Temperature condition '" << Tp.type() << "' on patch '"
-            << patch.name() << "' of " << T.objectPath() << ": the Newton"
-            << " engine (nonlinear { engine newton; }) conducts through a"
-            << " patch only where T is fixed or where surfaceHeatLoss gives"
-            << " the surface balance; valid: a fixed-value type (fixedValue,"
-            << " uniformFixedValue, fireTemperature, ...), surfaceHeatLoss"
-            << " or zeroGradient (insulated)" << exit(FatalIOError);
+            << Tp.patch().name() << "' of " << T.objectPath() << ": the"
+            << " Newton engine (nonlinear { engine newton; }) conducts"
+            << " through a patch only where T is fixed or where"
+            << " surfaceHeatLoss gives the surface balance; valid: a"
+            << " fixed-value type (fixedValue, uniformFixedValue,"
+            << " fireTemperature, ...), surfaceHeatLoss or zeroGradient"
+            << " (insulated)" << exit(FatalIOError);
     }
 }
 

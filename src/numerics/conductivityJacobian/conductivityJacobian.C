@@ -54,57 +54,52 @@ void Foam::conductivityJacobian::selectSolver(const word& fieldName)
     // An asymmetric solver: its preconditioner or smoother must be one too
     if (given.found("preconditioner", keyType::LITERAL))
     {
-        const word name(lduMatrix::preconditioner::getName(given));
-        if
+        checkAsymmetric
         (
-            !lduMatrix::preconditioner::asymMatrixConstructorTablePtr_
-                ->found(name)
-        )
-        {
-            FatalIOErrorInFunction(given)
-                << "The conductivity Jacobian makes the matrix of "
-                << fieldName << " asymmetric: preconditioner '" << name
-                << "' of solver " << solverName << " in " << given.name()
-                << " is for symmetric matrices only" << nl
-                << "    Valid choices:";
-            const wordList valid
-            (
-                lduMatrix::preconditioner::asymMatrixConstructorTablePtr_
-                    ->sortedToc()
-            );
-            for (const word& v : valid)
-            {
-                FatalIOError << ' ' << v;
-            }
-            FatalIOError
-                << " (or conductivityJacobian false in the nonlinear"
-                << " controls)" << exit(FatalIOError);
-        }
+            given, fieldName, "preconditioner",
+            lduMatrix::preconditioner::getName(given),
+            lduMatrix::preconditioner::asymMatrixConstructorTablePtr_
+                ->sortedToc()
+        );
     }
     if (given.found("smoother", keyType::LITERAL))
     {
-        const word name(lduMatrix::smoother::getName(given));
-        if (!lduMatrix::smoother::asymMatrixConstructorTablePtr_->found(name))
-        {
-            FatalIOErrorInFunction(given)
-                << "The conductivity Jacobian makes the matrix of "
-                << fieldName << " asymmetric: smoother '" << name
-                << "' of solver " << solverName << " in " << given.name()
-                << " is for symmetric matrices only" << nl
-                << "    Valid choices:";
-            const wordList valid
-            (
-                lduMatrix::smoother::asymMatrixConstructorTablePtr_->sortedToc()
-            );
-            for (const word& v : valid)
-            {
-                FatalIOError << ' ' << v;
-            }
-            FatalIOError
-                << " (or conductivityJacobian false in the nonlinear"
-                << " controls)" << exit(FatalIOError);
-        }
+        checkAsymmetric
+        (
+            given, fieldName, "smoother",
+            lduMatrix::smoother::getName(given),
+            lduMatrix::smoother::asymMatrixConstructorTablePtr_->sortedToc()
+        );
     }
+}
+
+
+void Foam::conductivityJacobian::checkAsymmetric
+(
+    const dictionary& given,
+    const word& fieldName,
+    const word& role,
+    const word& name,
+    const wordList& valid
+)
+{
+    if (valid.found(name))
+    {
+        return;
+    }
+    FatalIOErrorInFunction(given)
+        << "The conductivity Jacobian makes the matrix of " << fieldName
+        << " asymmetric: " << role << " '" << name << "' of solver "
+        << given.get<word>("solver") << " in " << given.name()
+        << " is for symmetric matrices only" << nl
+        << "    Valid choices:";
+    for (const word& v : valid)
+    {
+        FatalIOError << ' ' << v;
+    }
+    FatalIOError
+        << " (or conductivityJacobian false in the nonlinear controls)"
+        << exit(FatalIOError);
 }
 
 
