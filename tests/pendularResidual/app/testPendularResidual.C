@@ -17,6 +17,9 @@ Description
        fvSolution's 'nonlinear'); and with one term perturbed (the Stefan
        factor of the semi-permeable patch, the enthalpy carried through
        the internal faces) above them;
+    1b. one cell's residual (cellResidual) against the full residual's;
+    1c. pendularState's face fluxes (fluxes()) against the residual's,
+       face by face, 1e-10 of the largest (round-off);
     2. the Jacobian by face-by-face central differences (coupledResidual)
        against a central difference of the full residual, every column,
        1e-6 of the column's largest entry;
@@ -819,9 +822,10 @@ int main(int argc, char *argv[])
     // of every internal face and face of a patch, relative to the largest
     // |F_k| of the faces. Round-off (interpolation written w (o - n) + n
     // there, w o + (1 - w) n here) and the Kelvin-Laplace inversion of W
-    // from another guess: 1e-10 allowed; a face diffusivity taken as the
-    // owner's instead of interpolated leaves 4e-3 with millingtonQuirk
-    // (measured)
+    // from another guess: 1e-10 allowed (4.8e-16 measured); a face
+    // diffusivity taken as the owner's in pendularState instead of
+    // interpolated leaves 1.6e-2 (F_w) and 2.7e-2 (F_a) with
+    // millingtonQuirk (measured)
     section("1c. pendularState::fluxes() / the residual's face fluxes");
     {
         pendularState st(mesh);
