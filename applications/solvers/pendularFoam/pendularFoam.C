@@ -18,7 +18,8 @@ Description
         energy  dE/dt + div(-k_e grad T + F_a h_a + F_w h_w) = 0
 
         v_g = -(K_g/mu_g) grad p_g            (Darcy, eq. 10)
-        j   = -tau_s D_wa rho_g grad(rho_w/rho_g)   (Fick, eq. 3)
+        j   = -xi D_wa rho_g grad(rho_w/rho_g)   (Fick, eq. 3)
+        (xi: the soil's vapourDiffusionModel, by default tau_s)
 
     Unknowns: T, p_g and the water content W; the liquid fraction alpha_l,
     the vapour pressure p_w (Kelvin-Laplace) and the air pressure

@@ -364,7 +364,7 @@ void Foam::pendularResidual::flux
        *(liquid ? liquid->krgFace(o.alpha, n.alpha, n.p - o.p, w) : 1);
     const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
     const scalar j =
-        -medium_.vapourDiffusivity()*(w*o.rhoG + (1 - w)*n.rhoG)
+        -pendularState::faceValue(o.Dv, n.Dv, w)*(w*o.rhoG + (1 - w)*n.rhoG)
         *(n.omega - o.omega)*dc*magSf;
     const scalar Fw = (q >= 0 ? o.rhoW : n.rhoW)*q + j;
     const scalar Fa = (q >= 0 ? o.rhoA : n.rhoA)*q - j;
@@ -489,7 +489,7 @@ void Foam::pendularResidual::boundaryFlux
                -c.Kg*(liquid ? liquid->krg(c.alpha) : 1)
                /medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
             const scalar j =
-                -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
+                -c.Dv*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;
             const scalar Fw = (q > 0 ? c.rhoW : b.rhoW)*q + j;
             const scalar Fa = (q > 0 ? c.rhoA : b.rhoA)*q - j;
@@ -506,7 +506,7 @@ void Foam::pendularResidual::boundaryFlux
             // No air: the vapour diffuses with its Stefan flow,
             // F_w = j rho_g/rho_a (bounded by 100), upwind of j
             const scalar j =
-                -medium_.vapourDiffusivity()*b.rhoG*(b.omega - c.omega)
+                -c.Dv*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;
             const bool out = j > 0;
             const scalar rhoAf = out ? c.rhoA : b.rhoA;

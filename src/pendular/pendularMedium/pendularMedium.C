@@ -48,6 +48,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     kelvinDict_(closures_),
     kelvin_(kelvinDictionary()),
     permeability_(gasPermeabilityModel::New(closures_)),
+    vapourDiffusion_(vapourDiffusionModel::New(closures_)),
     minimumTemperature_
     (
         max
@@ -76,8 +77,10 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         ({
             "CpAir", "Ma", "CpVapour",
             "latentHeat", "latentHeatTemperature", "vapourDiffusivity",
-            "gasViscosity", "tortuosity", "liquidFlow"
+            "gasViscosity", "liquidFlow", "vapourDiffusionModel"
         });
+        // The diffusion factor's coefficients (tortuosity of constant)
+        allowed.append(vapourDiffusion_->coeffKeywords());
         allowed.append
         (
             checkedRead::modelKeywords(closures_, "waterModel", water_())
@@ -137,11 +140,6 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         read("latentHeatTemperature", dimTemperature, 373.15);
     vapourDiffusivity_ = read("vapourDiffusivity", dimViscosity, 2e-5);
     gasViscosity_ = read("gasViscosity", dimDynamicViscosity, 1.22e-5);
-    tortuosity_ =
-        checkedRead::getOrDefault
-        (
-            closures_, "tortuosity", dimless, 0.5, checkedRead::closed(SMALL, 1)
-        ).value();
 
 
     // The capillary flow of the liquid (optional): its closures and patch
@@ -196,7 +194,9 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         << " to " << gMax(porosity().primitiveField())
         << ", (rho C)_s " << rhoSolid_*CpSolid_ << " J/(m3 K)"
         << ", L " << latentHeat_ << " J/kg at " << latentHeatTemperature_
-        << " K, tau_s D_wa " << vapourDiffusivity() << " m2/s"
+        << " K, vapour diffusion " << vapourDiffusion_->type()
+        << " (xi D_wa dry "
+        << vapourDiffusivity(0, gMin(porosity().primitiveField())) << " m2/s)"
         << ", pendular range alpha_l < " << pendularLimit() << nl
         << "    saturation laws from " << minimumTemperature_ << " K;"
         << " liquid-free (all water vapour) at and above "

@@ -81,7 +81,19 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     alphaL_(readIO("alphaL", mesh), mesh),
     medium_((Info<< "Reading pendular properties\n" << endl, mesh)),
     muGas_("muGas", dimDynamicViscosity, medium_.gasViscosity()),
-    Dv_("Dv", dimViscosity, medium_.vapourDiffusivity()),
+    Dv_
+    (
+        IOobject("Dv", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimViscosity, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Dvf_
+    (
+        IOobject("Dvf", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimViscosity, Zero)
+    ),
     kind_
     (
         (
@@ -279,6 +291,7 @@ Foam::pendularState::cellState Foam::pendularState::closure
     s.rhoG = s.rhoW + s.rhoA;
     s.omega = s.rhoW/s.rhoG;
     s.Kg = medium.Kg(alpha, phi);
+    s.Dv = medium.vapourDiffusivity(alpha, phi);
     s.kappa = medium.kappa(alpha, phi);
     s.hW = medium.vapourEnthalpy(T);
     s.hA = medium.airEnthalpy(T);
@@ -326,6 +339,7 @@ void Foam::pendularState::update()
         pa_[celli] = s.pa;
         rhoA_[celli] = s.rhoA;
         Kg_[celli] = s.Kg;
+        Dv_[celli] = s.Dv;
         kappa_[celli] = s.kappa;
         E_[celli] = s.E;
         A_[celli] = s.A;
@@ -337,6 +351,7 @@ void Foam::pendularState::update()
     pw_.correctBoundaryConditions();
     p_.correctBoundaryConditions();
     Kg_.correctBoundaryConditions();
+    Dv_.correctBoundaryConditions();
     kappa_.correctBoundaryConditions();
 
     // Surface heat loss/flux: the surface temperature balancing the
@@ -509,9 +524,42 @@ void Foam::pendularState::fluxes()
         }
     }
 
+    // The effective vapour diffusivity of the faces: faceValue between the
+    // cells on internal and coupled faces (as pendularResidual), the cell's
+    // on the other patches
+    {
+        const labelUList& own = mesh_.owner();
+        const labelUList& nei = mesh_.neighbour();
+        const surfaceScalarField& w = mesh_.weights();
+        forAll(own, facei)
+        {
+            Dvf_[facei] =
+                faceValue(Dv_[own[facei]], Dv_[nei[facei]], w[facei]);
+        }
+        forAll(Dvf_.boundaryField(), patchi)
+        {
+            const fvPatchScalarField& Dvp = Dv_.boundaryField()[patchi];
+            const scalarField inside(Dvp.patchInternalField());
+            scalarField& Dvfp = Dvf_.boundaryFieldRef()[patchi];
+            if (Dvp.coupled())
+            {
+                const scalarField across(Dvp.patchNeighbourField());
+                const scalarField& wp = w.boundaryField()[patchi];
+                forAll(Dvfp, i)
+                {
+                    Dvfp[i] = faceValue(inside[i], across[i], wp[i]);
+                }
+            }
+            else
+            {
+                Dvfp = inside;
+            }
+        }
+    }
+
     const surfaceScalarField j
     (
-        -Dv_*fvc::interpolate(rhoG_)*fvc::snGrad(omegaW_)*magSf
+        -Dvf_*fvc::interpolate(rhoG_)*fvc::snGrad(omegaW_)*magSf
     );
 
     Fw_ = upwindFaces(rhoW_, q_)*q_ + j;

@@ -22,6 +22,10 @@ Description
     4. Kelvin-Laplace equilibrium: values, sign, limits, derivatives and
        the round trip alpha_l -> p_w/p_wsat -> alpha_l to 1e-12;
     5. gas permeability (kozenyCarman, constant): the report's values;
+       the vapour's diffusion factor xi = D_eff/D_wa (constant,
+       millingtonQuirk): Millington & Quirk's (1961) law at a few points,
+       its limits (dry: phi^(4/3); xi -> 0 as alpha_l -> 1), its other
+       published form theta_g tau, the bound xi <= theta_g, derivative;
        effective conductivity k_e(alpha_l) (the library's laws with a
        volume-mean pore fluid): Mansour's published Kunii-Smith sand,
        the rule for every law, monotony and the Wiener bounds;
@@ -60,6 +64,7 @@ Usage
 #include "wagnerPrussSaturationPressure.H"
 #include "kelvinLaplace.H"
 #include "gasPermeabilityModel.H"
+#include "vapourDiffusionModel.H"
 #include "effectiveConductivityModel.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -962,6 +967,101 @@ void testPermeability()
 }
 
 
+// * * * * * * * * * * * * * * Vapour diffusion * * * * * * * * * * * * * * //
+
+void testVapourDiffusion()
+{
+    section("vapour diffusion factor xi = D_eff/D_wa (alpha_l, phi)");
+
+    const scalar phi = 0.26;
+    autoPtr<vapourDiffusionModel> byDefault =
+        vapourDiffusionModel::New(dictionary());
+    checkTrue
+    (
+        "default vapourDiffusionModel is constant, xi = tau_s = 0.5",
+        byDefault->type() == "constant"
+     && byDefault->factor(0.3, phi) == 0.5,
+        byDefault->factor(0.3, phi), 0.5, "=="
+    );
+    autoPtr<vapourDiffusionModel> cst =
+        vapourDiffusionModel::New(dict("tortuosity 0.3;"));
+    checkAbs("constant: xi(alpha_l = 0.7) = tortuosity", cst->factor(0.7, phi),
+        0.3, 0);
+    checkAbs("constant: dxi/dalpha_l = 0", cst->dFactordAlphaL(0.7, phi), 0, 0);
+
+    autoPtr<vapourDiffusionModel> mq =
+        vapourDiffusionModel::New
+        (
+            dict("vapourDiffusionModel millingtonQuirk;")
+        );
+    // Millington & Quirk (1961): xi = theta_g^(10/3)/phi^2, theta_g = phi
+    // (1 - alpha_l); values computed by hand (python, double)
+    checkRel("MQ: xi(alpha_l = 0, phi = 0.26)", mq->factor(0, phi),
+        0.16594511177035756, 1e-14);
+    checkRel("MQ: xi(0.01)", mq->factor(0.01, phi), 0.16047785567543538,
+        1e-14);
+    checkRel("MQ: xi(0.1)", mq->factor(0.1, phi), 0.11679909976043525, 1e-14);
+    checkRel("MQ: xi(0.5)", mq->factor(0.5, phi), 0.016463840312077878,
+        1e-14);
+    checkRel("MQ: xi(0.9)", mq->factor(0.9, phi), 7.702489777859154e-05,
+        1e-14);
+    checkRel("MQ: xi(alpha_l = 0.5, phi = 0.4): theta_g 0.2",
+        mq->factor(0.5, 0.4), 0.029240177382128654, 1e-14);
+    // Dry: xi = phi^(4/3)
+    checkRel("MQ: dry, xi(0, phi) = phi^(4/3), phi = 0.35",
+        mq->factor(0, 0.35), std::pow(0.35, 4.0/3.0), 1e-14);
+    // Its other published form: theta_g tau, with the tortuosity factor
+    // tau = theta_g^(7/3)/phi^2
+    {
+        scalar worst = 0;
+        for (const scalar p : {0.2, 0.26, 0.4})
+        {
+            for (const scalar a : {0.0, 0.05, 0.3, 0.8})
+            {
+                const scalar th = p*(1 - a);
+                const scalar tau = std::pow(th, 7.0/3.0)/sqr(p);
+                worst = max(worst, std::fabs(mq->factor(a, p)/(th*tau) - 1));
+            }
+        }
+        checkAbs("MQ: xi = theta_g tau, tau = theta_g^(7/3)/phi^2 (max rel)",
+            worst, 0, 1e-14);
+    }
+    // S -> 1: no gas-filled pores, no diffusion
+    checkAbs("MQ: xi(alpha_l = 1) = 0", mq->factor(1, phi), 0, 0);
+    checkAbs("MQ: xi(alpha_l = 1 - 1e-6) (theta_g^(10/3)/phi^2 = 1.7e-21)",
+        mq->factor(1 - 1e-6, phi), 0, 2e-21);
+    // Decreasing in alpha_l, within (0, theta_g]: xi <= theta_g
+    {
+        bool ok = true;
+        scalar last = GREAT;
+        for (label i = 0; i < 100; ++i)
+        {
+            const scalar a = 0.01*i;
+            const scalar x = mq->factor(a, phi);
+            ok = ok && x < last && x > 0 && x <= phi*(1 - a);
+            last = x;
+        }
+        checkTrue("MQ: decreasing in alpha_l, 0 < xi <= theta_g", ok, 0, 0,
+            "==");
+    }
+    {
+        scalar worst = 0;
+        for (const scalar a : {0.0, 0.01, 0.1, 0.5, 0.9})
+        {
+            const scalar fd =
+                centralDiff
+                (
+                    [&](scalar x){ return mq->factor(x, phi); }, a, 1e-6
+                );
+            worst = max(worst, std::fabs(mq->dFactordAlphaL(a, phi)/fd - 1));
+        }
+        checkAbs("MQ: dxi/dalpha_l vs central differences (max rel)",
+            worst, 0, 1e-7);
+    }
+    checkAbs("MQ: dxi/dalpha_l(1) = 0", mq->dFactordAlphaL(1, phi), 0, 0);
+}
+
+
 // * * * * * * * * * * * Effective conductivity k_e(alpha_l) * * * * * * * * //
 
 void testConductivity()
@@ -1424,6 +1524,43 @@ void testBadInput()
     );
     expectIOError
     (
+        "unknown vapourDiffusionModel",
+        []()
+        {
+            vapourDiffusionModel::New(dict("vapourDiffusionModel fick;"));
+        },
+        {"vapourDiffusionModel", "fick", "constant", "millingtonQuirk"}
+    );
+    expectIOError
+    (
+        "tortuosity = 0",
+        [](){ vapourDiffusionModel::New(dict("tortuosity 0;")); },
+        {"tortuosity", "1]"}
+    );
+    expectIOError
+    (
+        "tortuosity = 1.5",
+        [](){ vapourDiffusionModel::New(dict("tortuosity 1.5;")); },
+        {"tortuosity", "1.5", "1]"}
+    );
+    expectIOError
+    (
+        "tortuosity in constantCoeffs (read by nobody)",
+        []()
+        {
+            vapourDiffusionModel::New
+            (
+                dict
+                (
+                    "vapourDiffusionModel constant;"
+                    " constantCoeffs { tortuosity 0.3; }"
+                )
+            );
+        },
+        {"tortuosity", "constantCoeffs", "vapourDiffusionModel"}
+    );
+    expectIOError
+    (
         "unknown law through kelvinLaplace",
         [](){ kelvinLaplace(dict("surfaceTensionLaw iapws; R0 1e-4;")); },
         {"surfaceTensionLaw", "iapws"}
@@ -1572,6 +1709,7 @@ int main(int argc, char* argv[])
     testMeniscus();
     testKelvinLaplace();
     testPermeability();
+    testVapourDiffusion();
     testConductivity();
     testBadInput();
 
