@@ -50,10 +50,18 @@ hp.Dpm = lambda Sw, T, pg: 1e-5
 
 
 def main():
-    # Optional second argument: the effective diffusivity tau D_wa [m2/s]
-    if len(sys.argv) > 2:
+    # Optional second argument: the effective diffusivity tau D_wa [m2/s];
+    # third: the diffusion law, 'mole' (Huang's closed form, default) or
+    # 'mass' (pendularFoam's Fick in mass fraction: heatPipe.rhsBalance)
+    if len(sys.argv) > 2 and sys.argv[2]:
         D = float(sys.argv[2])
         hp.Dpm = lambda Sw, T, pg: D
+    if len(sys.argv) > 3:
+        if sys.argv[3] not in ('mole', 'mass'):
+            sys.exit('reference.py: diffusion law mole or mass, not %r'
+                     % sys.argv[3])
+        if sys.argv[3] == 'mass':
+            hp.form, hp.diffusion = 'balance', 'mass'
     xf, err, h = hp.front()
     _, prof = hp.integrate(h, keep=True)
     Tf = prof[-1][4]

@@ -79,6 +79,14 @@ Other sensitivities (measured, not tested): cold-end S_w 0.98 / 0.995 /
 0.999: 2.1680 / 2.1827 / 2.1867 m; q 99 / 101 W/m2: 2.1997 / 2.1562 m;
 D_pm x 0.5 / x 2: within 1e-4 m.
 
+Balance-law form (rhsBalance, form = 'balance'): the same steady balances
+written flux by flux and solved, at each point, for the four derivatives
+and the vapour flux; with Huang's diffusion ('mole') it is his closed form
+where the air is gone and within 6e-4 of it in the air zone (front
+2.1775 m); with Fick in mass fraction ('mass', pendularFoam's law) the
+front is the same here (2.1775 m: Millington-Quirk's D_pm confines the air
+to the cold end) but not with a constant D_pm (tests/udellFitchHeatPipe).
+
 Usage: heatPipe.py [profile.csv]   prints the front and writes the profile.
 """
 
@@ -218,9 +226,26 @@ def clapeyronHeat(T):
     return R*T*T/Mw*(math.log(psat(T + d)) - math.log(psat(T - d)))/(2*d)
 
 
+def psatWagnerPruss(T):
+    """Wagner & Pruss (2002), eq. 2.5: saturation pressure [Pa]
+    (pendularFoam's saturationPressureLaw wagnerPruss)."""
+    a = [-7.85951783, 1.84408259, -11.7866497, 22.6807411, -15.9618719,
+         1.80122502]
+    tau = 1 - T/647.096
+    f = (a[0]*tau + a[1]*tau**1.5 + a[2]*tau**3 + a[3]*tau**3.5
+         + a[4]*tau**4 + a[5]*tau**7.5)
+    return 22.064e6*math.exp(647.096/T*f)
+
+
+# With thermo 'iapws', the saturation law: 'iapws97' or 'wagnerPruss'
+psatLaw = 'iapws97'
+
+
 def psatModel(T):
     """The saturation pressure the ODEs carry."""
-    return psatCC(T) if thermo == 'huang' else psat(T)
+    if thermo == 'huang':
+        return psatCC(T)
+    return psatWagnerPruss(T) if psatLaw == 'wagnerPruss' else psat(T)
 
 
 def rhs(y):
@@ -259,13 +284,86 @@ def rhs(y):
     ], eta
 
 
+# The balance-law form of the same steady problem (rhsBalance): instead of
+# Huang's closed form, the four derivatives and the vapour mass flux m_v
+# solve, at each point, the steady 1-D balances written flux by flux
+# (x the air mole fraction, u_g = -(K k_rg/mu_g) p_g' the gas's Darcy
+# flux, D = D_pm):
+#   liquid     rho_w u_l = -m_v,  u_l = -(K k_rw/mu_w) (p_g' - p_c')
+#   energy     q = -lambda T' + h_L m_v
+#   phases     p_g (1 - x) = p_sat(T) Kel(S_e, T)   (differentiated)
+#   vapour and air, by 'diffusion':
+#     'mole'  Huang's (2015) form: the vapour carried as (1 - x) rho_g u_g,
+#             the air's x rho_g u_g balanced by -rho_g D x'
+#             (m_v = (1 - x) rho_g u_g, x'/x = u_g/D);
+#     'mass'  Fick in mass fraction, pendularFoam's (EWGM report, Canot
+#             2024, eq. 3; pendularResidual): j = -D rho_g omega_w', the
+#             air's flux rho_a u_g - j = 0 and the vapour's
+#             rho_w u_g + j = rho_g u_g (m_v = rho_g u_g,
+#             x'/x = (M_g/M_w) u_g/D, omega_a = x M_a/M_g).
+# All are linear in m_v once the state is given; with 'mole' rhsBalance
+# is Huang's rhs (checked to 1e-12 by main()). kelvinLaw False drops the
+# Kelvin factor from the phase equilibrium (pendularFoam's liquidFlow p_c
+# does not lower p_w).
+form = 'huang'          # 'huang' (rhs) or 'balance' (rhsBalance)
+diffusion = 'mole'
+kelvinLaw = True
+
+
+def dpsatModel(T):
+    """dp_sat/dT of psatModel [Pa/K]."""
+    if thermo == 'huang':
+        return psatModel(T)*hv*Mw/(R*T*T)
+    d = 1e-3
+    return (psatModel(T + d) - psatModel(T - d))/(2*d)
+
+
+def rhsBalance(y):
+    Se, pg, u, T = y
+    x = math.exp(u)
+    krw = Se**3
+    krg = (1 - Se)**3
+    Sw = Swr + Se*(1 - Swr)
+    pc = p0*sigma*J(Se)
+    dpcdSe = p0*sigma*dJdSe(Se)
+    rw = rhoW(T)
+    Mg = x*Ma + (1 - x)*Mw
+    rg = pg*Mg/(R*T)
+    muG = muGas(T, x)
+    lam = lambdaPM(Sw, T)
+    D = Dpm(Sw, T, pg)
+    hL = latentHeat(T)
+    Kel = kelvin(Se, T) if kelvinLaw else 1.0
+    dKdSe = -Kel*dpcdSe*Mw/(rw*R*T) if kelvinLaw else 0.0
+    dKdT = Kel*pc*Mw/(rw*R*T*T) if kelvinLaw else 0.0
+    ps = psatModel(T)
+    # Each derivative as a + b m_v
+    if diffusion == 'mole':
+        ug = 1/(rg*(1 - x))
+        du = ug/D
+    elif diffusion == 'mass':
+        ug = 1/rg
+        du = Mg/Mw*ug/D
+    else:
+        raise ValueError('diffusion: mole or mass, not %r' % diffusion)
+    dpg = -muG/(K*krg)*ug
+    dTa, dTb = -q/lam, hL/lam
+    dSe = (dpg - muW(T)/(rw*K*krw))/dpcdSe
+    # d/dx [p_g (1 - x)] = d/dx [p_sat Kel]
+    A = dpsatModel(T)*Kel + ps*dKdT
+    B = ps*dKdSe
+    mv = A*dTa/((1 - x)*dpg - pg*x*du - A*dTb - B*dSe)
+    return [dSe*mv, dpg*mv, du*mv, dTa + dTb*mv], None
+
+
 def rk4(y, h):
     """One RK4 step; None if a stage leaves the two-phase range."""
+    f = rhsBalance if form == 'balance' else rhs
     try:
-        k1, _ = rhs(y)
-        k2, _ = rhs([a + 0.5*h*b for a, b in zip(y, k1)])
-        k3, _ = rhs([a + 0.5*h*b for a, b in zip(y, k2)])
-        k4, _ = rhs([a + h*b for a, b in zip(y, k3)])
+        k1, _ = f(y)
+        k2, _ = f([a + 0.5*h*b for a, b in zip(y, k1)])
+        k3, _ = f([a + 0.5*h*b for a, b in zip(y, k2)])
+        k4, _ = f([a + h*b for a, b in zip(y, k3)])
     except (TypeError, ValueError, ZeroDivisionError):
         return None
     yn = [a + h/6*(b1 + 2*b2 + 2*b3 + b4)
@@ -293,7 +391,7 @@ def kelvin(Se, T):
 
 def coldEnd():
     """Cold-end state (S_e, p_g, ln x, T), x on the ODEs' equilibrium."""
-    x0 = 1 - psatModel(T0)*kelvin(Se0, T0)/pg0
+    x0 = 1 - psatModel(T0)*(kelvin(Se0, T0) if kelvinLaw else 1)/pg0
     return [Se0, pg0, math.log(x0), T0]
 
 
@@ -382,6 +480,30 @@ def main():
             print('  %s x %.2f: front %.4f m (%+.4f)'
                   % (key, f, xs, xs - base))
             scale[key] = 1.0
+    # The balance-law form (rhsBalance): with Huang's diffusion it is his
+    # closed form where the air is gone (x < 1e-6), and close to it in the
+    # air zone (his xi keeps 1 for 1/(1 - x) and his zeta a term
+    # K x p_g/(rho_g nu_g D (1 - x)): both small); with Fick in mass
+    # fraction (pendularFoam's) the front moves
+    global form, diffusion
+    # (compared on the profile's S_e, x, T with p_g on the equilibrium:
+    # the ODEs carry it to 5e-4 only, and the two forms use it apart)
+    dev = [0, 0]
+    for (xp, Se, pg, u, T) in prof:
+        if Se > 1e-3:
+            y = [Se, psatModel(T)*kelvin(Se, T)/(1 - math.exp(u)), u, T]
+            a, _ = rhs(y)
+            b, _ = rhsBalance(y)
+            i = 0 if math.exp(u) < 1e-6 else 1
+            dev[i] = max(dev[i], max(abs(c/d - 1) for c, d in zip(a, b)))
+    form = 'balance'
+    xm = integrate(h)[0]
+    diffusion = 'mass'
+    xw = integrate(h)[0]
+    form, diffusion = 'huang', 'mole'
+    print('balance form: max relative |rhs - rhsBalance| %.1e (steam '
+          'zone), %.1e (air zone); front %.4f m (Huang: %.4f); Fick in '
+          'mass fraction: front %.4f m' % (dev[0], dev[1], xm, base, xw))
     # Real-water thermodynamics: front and the IAPWS equilibrium carried
     thermo = 'iapws'
     xr, profR = integrate(h, keep=True)
