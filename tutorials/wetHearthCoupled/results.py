@@ -207,6 +207,15 @@ def stops(name, label):
 say('pendularFoam near saturation (flat hearth, K = 1e-14 m2):')
 for a0 in ('0.9', '0.99', '0.999'):
     stops('hearth_pend_%s_1e-14' % a0, 'alpha_l0 = ' + a0)
+# The diagnosis of those stops: the Fick diffusion nearly off
+name = 'hearth_pend_0.9_1e-14_tau1e-3'
+with open(os.path.join('run', name, 'log.pendularFoam')) as f:
+    times = re.findall(r'^Time = (\S+)', f.read(), re.M)
+say('  alpha_l0 = 0.9, tortuosity 1e-3 (Fick diffusion nearly off): runs'
+    ' to t = %.0f s' % float(times[-1]))
+figs.add(name + '.end', float(times[-1]), 's')
+for kind, v in balances(os.path.join('run', name, 'log.pendularFoam')).items():
+    figs.add('%s.balance_%s' % (name, kind), v, '-')
 say('pendularFoam, flat hearth, alpha_l0 = 0.5, K = 1e-18 m2:')
 stops('hearth_pend_0.5_1e-18', 'K = 1e-18')
 say()
