@@ -48,7 +48,6 @@ void Foam::coupledResidual::localJacobian
     const label B = nBlock_;
     scalar Gp[64], Gm[64];
     const bool central = scheme_ == differenceScheme::central;
-    differencing_ = true;
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
@@ -67,7 +66,6 @@ void Foam::coupledResidual::localJacobian
                 central ? (Gp[i] - Gm[i])/(2*h) : (Gp[i] - G0[i])/h;
         }
     }
-    differencing_ = false;
 }
 
 
@@ -256,8 +254,7 @@ Foam::coupledResidual::coupledResidual
     mesh_(mesh),
     nBlock_(nBlock),
     xScale_(xScale),
-    scheme_(scheme),
-    differencing_(false)
+    scheme_(scheme)
 {
     if
     (

@@ -260,30 +260,6 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
             break;
         }
     }
-    // A perturbed state of the Jacobian's differences: its inversion
-    // starts from the liquid fraction of the unperturbed state (the
-    // cached one at the same W, or at the same T: the steps of T and of
-    // W), within the step of its solution (1.5e-8 relative with forward
-    // differences): one Newton step instead of 3.75 on average from the
-    // guess of the sub-step (measured, bench/pendularNewton's column).
-    // Only the Jacobian sees the perturbed states; every state of the
-    // residual starts from the sub-step's guess, as before
-    scalar alphaGuess = alphaGuess_[celli];
-    if (!same && differencing())
-    {
-        for (const cacheEntry& e : entries)
-        {
-            if
-            (
-                e.x[1] == x[1] && (e.x[0] == x[0] || e.x[2] == x[2])
-             && e.s.alpha > 0
-            )
-            {
-                alphaGuess = e.s.alpha;
-                break;
-            }
-        }
-    }
     label& next = cacheNext_[celli];
     cacheEntry& e = entries[next];
     next = (next + 1) % nCache;
@@ -296,7 +272,7 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
         )
       : state
         (
-            medium_.porosity()[celli], alphaGuess, x,
+            medium_.porosity()[celli], alphaGuess_[celli], x,
             saturation(celli, x[0])
         );
     e.x[0] = x[0];
