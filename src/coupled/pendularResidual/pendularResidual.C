@@ -54,6 +54,8 @@ Foam::pendularResidual::pendularResidual
     alphaGuess_(alphaGuess),
     cache_(fvMesh_.nCells()),
     cacheNext_(fvMesh_.nCells(), Zero),
+    satCache_(fvMesh_.nCells()),
+    satNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
     nbrAlphaGuess_()
 {
@@ -63,6 +65,13 @@ Foam::pendularResidual::pendularResidual
         for (cacheEntry& e : entries)
         {
             e.x[0] = e.x[1] = e.x[2] = -GREAT;
+        }
+    }
+    for (auto& sats : satCache_)
+    {
+        for (pendularMedium::saturationState& sat : sats)
+        {
+            sat.T = -GREAT;
         }
     }
 
@@ -235,7 +244,7 @@ Foam::tmp<Foam::scalarField> Foam::pendularResidual::pack
 }
 
 
-Foam::pendularResidual::cellState Foam::pendularResidual::state
+const Foam::pendularResidual::cellState& Foam::pendularResidual::state
 (
     const label celli,
     const scalar* x
@@ -263,19 +272,45 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     label& next = cacheNext_[celli];
     cacheEntry& e = entries[next];
     next = (next + 1) % nCache;
-    const cellState s =
+    e.s =
         same
       ? pendularState::closure
         (
             medium_, medium_.porosity()[celli], x[0], x[1] + pRef_, x[2],
             same->alpha, same->rhoW
         )
-      : state(medium_.porosity()[celli], alphaGuess_[celli], x);
+      : state
+        (
+            medium_.porosity()[celli], alphaGuess_[celli], x,
+            saturation(celli, x[0])
+        );
     e.x[0] = x[0];
     e.x[1] = x[1];
     e.x[2] = x[2];
-    e.s = s;
     return e.s;
+}
+
+
+const Foam::pendularMedium::saturationState&
+Foam::pendularResidual::saturation
+(
+    const label celli,
+    const scalar T
+) const
+{
+    FixedList<pendularMedium::saturationState, 2>& sats = satCache_[celli];
+    for (const pendularMedium::saturationState& sat : sats)
+    {
+        if (sat.T == T)
+        {
+            return sat;
+        }
+    }
+    label& next = satNext_[celli];
+    pendularMedium::saturationState& sat = sats[next];
+    next = 1 - next;
+    sat = medium_.saturationValues(T);
+    return sat;
 }
 
 
@@ -283,18 +318,17 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
 (
     const scalar phi,
     const scalar alphaGuess,
-    const scalar* x
+    const scalar* x,
+    const pendularMedium::saturationState& sat
 ) const
 {
     // Model A: the liquid fraction holding W at T and the vapour in
     // Kelvin-Laplace equilibrium with it, then pendularState's closure
+    // (the inversion uses p_wsat and sigma at T, not their slopes)
     const scalar T = x[0];
     const scalar W = x[2];
     scalar alpha, rhoW;
-    medium_.water().equilibriumState
-    (
-        W, medium_.saturation(T), phi, alphaGuess, alpha, rhoW
-    );
+    medium_.water().equilibriumState(W, sat, phi, alphaGuess, alpha, rhoW);
     return
         pendularState::closure(medium_, phi, T, x[1] + pRef_, W, alpha, rhoW);
 }
@@ -416,7 +450,7 @@ void Foam::pendularResidual::cellTerm
     scalar* S
 ) const
 {
-    const cellState s = state(celli, x);
+    const cellState& s = state(celli, x);
     const scalar VByDt = fvMesh_.V()[celli]/dt_;
     S[0] = VByDt*(a0W_[celli]*s.W - W0_[celli]);
     S[1] = VByDt*(a0_*s.A - A0_[celli]);
@@ -432,10 +466,11 @@ void Foam::pendularResidual::faceFlux
     scalar* F
 ) const
 {
-    const cellState o = state(fvMesh_.faceOwner()[facei], xOwn);
+    // (references into the cache of two different cells)
+    const cellState& o = state(fvMesh_.faceOwner()[facei], xOwn);
     if (facei < fvMesh_.nInternalFaces())
     {
-        const cellState n = state(fvMesh_.faceNeighbour()[facei], xNei);
+        const cellState& n = state(fvMesh_.faceNeighbour()[facei], xNei);
         flux
         (
             o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
@@ -450,7 +485,11 @@ void Foam::pendularResidual::faceFlux
     patchFace(facei, patchi, i);
     const label bFacei = facei - fvMesh_.nInternalFaces();
     const cellState n =
-        state(nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei);
+        state
+        (
+            nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei,
+            medium_.saturationValues(xNei[0])
+        );
     flux
     (
         o, n, fvMesh_.magSf().boundaryField()[patchi][i],
@@ -471,7 +510,7 @@ void Foam::pendularResidual::boundaryFlux
     label patchi, i;
     patchFace(facei, patchi, i);
     const fvPatch& patch = fvMesh_.boundary()[patchi];
-    const cellState c = state(fvMesh_.faceOwner()[facei], xOwn);
+    const cellState& c = state(fvMesh_.faceOwner()[facei], xOwn);
     const cellState b = boundaryState(patchi, i, c);
     const scalar magSf = patch.magSf()[i];
     const scalar dc = patch.deltaCoeffs()[i];

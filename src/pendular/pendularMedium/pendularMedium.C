@@ -225,13 +225,21 @@ const Foam::waterModel& Foam::pendularMedium::water() const
 
 
 Foam::pendularMedium::saturationState
-Foam::pendularMedium::lawState(const scalar T) const
+Foam::pendularMedium::lawState
+(
+    const scalar T,
+    const bool slopes
+) const
 {
     const saturationPressureLaw& pSatLaw = kelvin_.saturationPressure();
     const surfaceTensionLaw& sigmaLaw = kelvin_.surfaceTension();
     const scalar pSat = pSatLaw.pSat(T);
     const scalar sigma = sigmaLaw.sigma(T);
     const scalar VmByR = kelvin_.Vm()/R();
+    if (!slopes)
+    {
+        return {T, pSat, VmByR*sigma/T, 0, 0, false};
+    }
     return
     {
         T,
@@ -268,22 +276,38 @@ Foam::pendularMedium::saturation(const scalar T) const
 }
 
 
+Foam::pendularMedium::saturationState
+Foam::pendularMedium::saturationValues(const scalar T) const
+{
+    // saturation(T) without the slopes
+    if (std::isnan(T) || T < minimumTemperature_)
+    {
+        saturationState sat = lawState(minimumTemperature_, false);
+        sat.T = T;
+        return sat;
+    }
+    if (T >= dryOutTemperature_)
+    {
+        return {T, pSatDryOut_, 0, 0, 0, true};
+    }
+    return lawState(T, false);
+}
+
+
 Foam::scalar Foam::pendularMedium::kinkWater
 (
     const scalar phi,
     const scalar T
 ) const
 {
-    if (!(T >= minimumTemperature_ && T < GREAT))
+    // 0 outside the laws' range (NaN included) and at or above T_d
+    if (!(T >= minimumTemperature_ && T < dryOutTemperature_))
     {
         return 0;
     }
-    const saturationState sat = saturation(T);
-    if (sat.liquidFree)
-    {
-        return 0;
-    }
-    return phi*Mw()*sat.pSat/(R()*T);
+    // p_wsat(T) alone (saturation(T)'s, without the other laws: the Newton
+    // engine asks for it per cell and iteration)
+    return phi*Mw()*kelvin_.saturationPressure().pSat(T)/(R()*T);
 }
 
 
