@@ -182,7 +182,8 @@ SENS_H = ('1.5cm', '2.5cm', '3.5cm')
 hearthMQ = []
 stoppedMQ = []
 for a0, K in (('0.3', '1e-14'), ('0.5', '1e-14'), ('0.5', '1e-16'),
-              ('0.9', '1e-14'), ('0.99', '1e-14'), ('0.999', '1e-14')):
+              ('0.9', '1e-14'), ('0.9', '1e-16'), ('0.99', '1e-14'),
+              ('0.999', '1e-14')):
     name = 'hearth_pendMQ_%s_%s' % (a0, K)
     if reached_end(name):
         hearthMQ.append((a0, K, 'pendularFoam MQ, alpha_l0 = %s, K = %s'
