@@ -150,6 +150,9 @@ rowsD = [('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f'),
          ('TMax 290 C, 24 h [cm]', 'd290_end', 1, '%.2f'),
          ('TMax 100 C, 6 h [cm]', 'd100_6h', 1, '%.2f'),
          ('TMax 100 C, 24 h [cm]', 'd100_end', 1, '%.2f')]
+rowsB = [('water', 'balance_water', 1, '%.1e'),
+         ('air', 'balance_air', 1, '%.1e'),
+         ('energy', 'balance_energy', 1, '%.1e')]
 say('Flat hearth (../flatHearthAxi: phi = 0.15, 700 C for 6 h, 24 h)')
 say()
 table('Reddening times', hearth, rowsT)
@@ -167,6 +170,65 @@ for a0 in ('0.3', '0.5'):
             figs.add('hearth_pend_%s_%s.minusAhc.%s' % (a0, K, k),
                      (pend[k] - ahc[k])*sc, unit)
 
+# The same with the vapour's diffusion factor of Millington & Quirk (1961)
+# (Allrun: runs hearth_pendMQ_*): the runs that reach their end, and the
+# stop time of the others
+def reached_end(name):
+    st = os.path.join('run', name, 'status')
+    return not os.path.exists(st) or int(open(st).read()) == 0
+
+
+SENS_H = ('1.5cm', '2.5cm', '3.5cm')
+hearthMQ = []
+stoppedMQ = []
+for a0, K in (('0.3', '1e-14'), ('0.5', '1e-14'), ('0.5', '1e-16'),
+              ('0.9', '1e-14'), ('0.9', '1e-16'), ('0.99', '1e-14'),
+              ('0.999', '1e-14')):
+    name = 'hearth_pendMQ_%s_%s' % (a0, K)
+    if reached_end(name):
+        hearthMQ.append((a0, K, 'pendularFoam MQ, alpha_l0 = %s, K = %s'
+                         % (a0, K), analyse(name, 86400.0, SENS_H, True)))
+    else:
+        stoppedMQ.append((name, 'alpha_l0 = %s, K = %s' % (a0, K)))
+runsMQ = [hearth[0]] + [(label, r) for _, _, label, r in hearthMQ]
+say('Flat hearth, pendularFoam with vapourDiffusionModel millingtonQuirk')
+say()
+table('Reddening times', runsMQ, rowsT)
+table('100 C plateau and peaks', runsMQ, rowsP)
+table('Depths reached', runsMQ, rowsD)
+table('Largest relative imbalance (every write)', runsMQ, rowsB)
+# What transport changes with MQ: minus ahcFoam at the same alpha_l0
+# (0.3, 0.5) and minus the SATURATED ahcFoam (the flagship's soil), and
+# MQ minus the constant tortuosity at the same alpha_l0 and K
+say('pendularFoam (MQ) minus ahcFoam [cm, cm, h]:')
+ahcOf = {'0.3': dict(hearth)['ahcFoam, alpha_l0 = 0.3'],
+         '0.5': dict(hearth)['ahcFoam, alpha_l0 = 0.5']}
+for a0, K, label, r in hearthMQ:
+    refs = [('sat', hearth[0][1])]
+    if a0 in ahcOf:
+        refs.append(('same', ahcOf[a0]))
+    for tag, ref in refs:
+        # (None: 290 C does not reach 3.5 cm)
+        d = [None if r[k] is None else (r[k] - ref[k])*sc
+             for k, sc in (('d290_6h', 1), ('d290_end', 1),
+                           ('t290_3.5cm', 1/HOUR))]
+        for k, v in zip(('d290_6h', 'd290_end', 't290_3.5cm'), d):
+            figs.add('hearth_pendMQ_%s_%s.minusAhc%s.%s'
+                     % (a0, K, 'Sat' if tag == 'sat' else '', k), v,
+                     'h' if k.startswith('t') else 'cm')
+        say('  %s minus ahcFoam %s: 290 C depth 6 h %s, 24 h %s,'
+            ' 290 C at 3.5 cm %s'
+            % (label, 'saturated' if tag == 'sat' else 'alpha_l0 = ' + a0,
+               fmt(d[0], '%+.2f'), fmt(d[1], '%+.2f'), fmt(d[2], '%+.2f')))
+    cname = 'pendularFoam, alpha_l0 = %s, K = %s' % (a0, K)
+    if cname in dict(hearth):
+        c = dict(hearth)[cname]
+        for k, sc in (('d290_6h', 1), ('d290_end', 1), ('t290_3.5cm', 1/HOUR)):
+            figs.add('hearth_pendMQ_%s_%s.minusConstant.%s' % (a0, K, k),
+                     None if r[k] is None else (r[k] - c[k])*sc,
+                     'h' if k.startswith('t') else 'cm')
+say()
+
 # The 1-D column against the axis of ../flatHearthAxi (its README's
 # figures, checked by tests/tutorialFlatHearthAxi): 1-D minus axisymmetric
 AXI = {'d290_6h': 3.58, 'd290_end': 3.71, 'd100_6h': 5.85, 'd100_end': 6.68}
@@ -177,9 +239,6 @@ for k, v in AXI.items():
     say('  %s: %.2f cm (1-D %.2f, axisymmetric %.2f)' % (k, sat[k] - v, sat[k], v))
 say()
 
-rowsB = [('water', 'balance_water', 1, '%.1e'),
-         ('air', 'balance_air', 1, '%.1e'),
-         ('energy', 'balance_energy', 1, '%.1e')]
 table('Largest relative imbalance (every write)', hearth, rowsB)
 say('Heat out through the bottom (60 cm) in the saturated ahcFoam run: '
     '%.2f %% of the heat in through the fire'
@@ -216,6 +275,9 @@ say('  alpha_l0 = 0.9, tortuosity 1e-3 (Fick diffusion nearly off): runs'
 figs.add(name + '.end', float(times[-1]), 's')
 for kind, v in balances(os.path.join('run', name, 'log.pendularFoam')).items():
     figs.add('%s.balance_%s' % (name, kind), v, '-')
+say('pendularFoam (MQ) near saturation, flat hearth:')
+for name, label in stoppedMQ:
+    stops(name, label)
 say('pendularFoam, flat hearth, alpha_l0 = 0.5, K = 1e-18 m2:')
 stops('hearth_pend_0.5_1e-18', 'K = 1e-18')
 say()
@@ -241,6 +303,31 @@ ahc = pit[1][1]
 for K, (_, pend) in zip(('1e-14', '1e-16'), pit[2:]):
     for k in ('t290_2cm', 't290_4cm'):
         figs.add('pit_pend_0.5_%s.minusAhc.%s' % (K, k), (pend[k] - ahc[k])/HOUR, 'h')
+# The pit with millingtonQuirk
+pitMQ = []
+for a0 in ('0.5', '0.9', '0.99'):
+    name = 'pit_pendMQ_%s_1e-14' % a0
+    if not os.path.isdir(os.path.join('run', name)):
+        continue
+    if reached_end(name):
+        r = analyse(name, 21600.0, ('2cm', '4cm'), False)
+        pitMQ.append(('pendularFoam MQ, alpha_l0 = %s, K = 1e-14' % a0, r))
+        for tag, ref in (('Sat', pit[0][1]),) + \
+                ((('', ahc),) if a0 == '0.5' else ()):
+            for k in ('t290_2cm', 't290_4cm'):
+                figs.add('%s.minusAhc%s.%s' % (name, tag, k),
+                         (r[k] - ref[k])/HOUR, 'h')
+    else:
+        say('pendularFoam (MQ), pit:')
+        stops(name, 'alpha_l0 = ' + a0)
+if pitMQ:
+    table('Pit, pendularFoam with millingtonQuirk', [pit[0], pit[1]] + pitMQ,
+          [('290 C at 2 cm [h]', 't290_2cm', 1/HOUR, '%.2f'),
+           ('290 C at 4 cm [h]', 't290_4cm', 1/HOUR, '%.2f'),
+           ('100 C at 2 cm [h]', 't100_2cm', 1/HOUR, '%.2f'),
+           ('100 C at 4 cm [h]', 't100_4cm', 1/HOUR, '%.2f'),
+           ('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f')])
+    table('Largest relative imbalance (every write)', pitMQ, rowsB)
 say('pendularFoam, pit, alpha_l0 = 0.5, K = 1e-18 m2:')
 stops('pit_pend_0.5_1e-18', 'K = 1e-18')
 say()
