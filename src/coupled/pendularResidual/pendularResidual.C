@@ -388,8 +388,9 @@ void Foam::pendularResidual::flux
     scalar* F
 ) const
 {
-    // pendularState::fluxes(): linear interpolation (owner weight w),
-    // upwind carried values (owner where the flux is >= 0)
+    // pendularState::fluxes(): linear interpolation (owner weight w) but
+    // for xi D_wa (pendularState::faceValue: harmonic), upwind carried
+    // values (owner where the flux is >= 0)
     // With liquidFlow, times k_rg of the face (liquidFlow::krgFace: as
     // k_rl, upwind of the gas pressure difference by default)
     const liquidFlow* liquid = medium_.liquidFlowPtr();

@@ -524,9 +524,9 @@ void Foam::pendularState::fluxes()
         }
     }
 
-    // The effective vapour diffusivity of the faces: faceValue between the
-    // cells on internal and coupled faces (as pendularResidual), the cell's
-    // on the other patches
+    // The effective vapour diffusivity of the faces: faceValue (the
+    // distance-weighted harmonic mean) between the cells on internal and
+    // coupled faces (as pendularResidual), the cell's on the other patches
     {
         const labelUList& own = mesh_.owner();
         const labelUList& nei = mesh_.neighbour();
