@@ -20,6 +20,9 @@ Description
     1b. one cell's residual (cellResidual) against the full residual's;
     1c. pendularState's face fluxes (fluxes()) against the residual's,
        face by face, 1e-10 of the largest (round-off);
+    1d. the faces' xi D_wa against the half-cells' resistances in series
+       from the geometry (1e-12), and off the linear and swapped-weight
+       means by more than 1e-3 with millingtonQuirk;
     2. the Jacobian by face-by-face central differences (coupledResidual)
        against a central difference of the full residual, every column,
        1e-6 of the column's largest entry; and by forward differences
