@@ -180,10 +180,14 @@ Foam::scalar Foam::pendularResidual::waterEulerCorrection
 }
 
 
-bool Foam::pendularResidual::followsCondition(const fvPatchScalarField& pf)
+bool Foam::pendularResidual::followsCondition
+(
+    const fvPatchScalarField& pf,
+    const bool temperature
+)
 {
     return
-        isA<surfaceHeatLossFvPatchScalarField>(pf)
+        (temperature && isA<surfaceHeatLossFvPatchScalarField>(pf))
      || (
             !isA<mixedFvPatchScalarField>(pf)
          && (
@@ -204,7 +208,7 @@ void Foam::pendularResidual::checkTemperatureConditions
     forAll(T.boundaryField(), patchi)
     {
         const fvPatchScalarField& Tp = T.boundaryField()[patchi];
-        if (followsCondition(Tp))
+        if (followsCondition(Tp, true))
         {
             continue;
         }
