@@ -35,7 +35,6 @@ xMole = mx[-2]
 q = 100.0
 
 Ns = (48, 96, 192)
-runs = {}
 
 
 def hotValue(case, t):
@@ -51,8 +50,10 @@ def zoneDev(x, v, xs, vs, xr):
                for i in range(len(x)) if x[i] < xr - 0.1)
 
 
-for N in Ns:
-    case = os.path.join(scratch, 'cells_%d' % N)
+def load(name, N, label):
+    """A run's steady profile, front, T_hot, dry-zone flux and deviations
+    from the references; checks its steadiness and balances."""
+    case = os.path.join(scratch, name)
     x, S, T, t = fr.profile(case)
     times = sorted((d for d in os.listdir(case)
                     if re.fullmatch(r'[0-9.e+-]+', d) and d != '0'), key=float)
@@ -67,19 +68,28 @@ for N in Ns:
              dS=zoneDev(x, S, rx, rS, xRef), dT=zoneDev(x, T, rx, rT, xRef),
              dSm=zoneDev(x, S, mx, mS, xMole),
              dTm=zoneDev(x, T, mx, mT, xMole))
-    runs[N] = r
-    print('%3d cells, t = %g s: front %.4f m (reference %.4f, published '
+    print('%3d cells%s, t = %g s: front %.4f m (reference %.4f, published '
           'form %.4f), T_hot %.3f K (%.3f), dry-zone flux %s, two-phase '
           'zone max |S - S_ref| %.4f (%.4f), max |T - T_ref| %.3f K '
           '(%.3f), max |dS| over the last write interval %.1e'
-          % (N, t, r['xf'], xRef, xMole, r['Thot'], ThotRef,
+          % (N, label, t, r['xf'], xRef, xMole, r['Thot'], ThotRef,
              '%.8f W/m2' % r['q'] if r['q'] else '-', r['dS'], r['dSm'],
              r['dT'], r['dTm'], steady))
-    c.le('%d cells: steady (max |dS| over the last 1e6 s)' % N, steady, 1e-5)
+    c.le('%d cells%s: steady (max |dS| over the last 1e6 s)' % (N, label),
+         steady, 1e-5)
     imb = [abs(float(v)) for v in
            re.findall(r'imbalance\s+=\s+\S+ \(relative (\S+)\)', log)]
-    c.le('%d cells: max relative imbalance (water, air, energy)' % N,
-         max(imb) if imb else 1, 1e-9)
+    c.le('%d cells%s: max relative imbalance (water, air, energy)'
+         % (N, label), max(imb) if imb else 1, 1e-9)
+    return r
+
+
+# The study with the default upwind k_rl, k_rg (cells_N) and with their
+# arithmetic mean on the faces (arith_N)
+runs = dict((N, load('cells_%d' % N, N, '')) for N in Ns)
+arith = dict((N, load('arith_%d' % N, N, ', arithmetic k_rl'))
+             for N in Ns)
+
 
 # 1. The front: first order, extrapolated onto the reference
 err = [runs[N]['xf'] - xRef for N in Ns]
@@ -126,21 +136,64 @@ for N in (96, 192):
         c.le('%d cells: dry-zone flux / %g W/m2 - 1' % (N, q),
              abs(runs[N]['q']/q - 1), 1e-7)
 
-# 2b. The diffusivity: the front's shift from tau D_wa = 1e-5 m2/s
+# 5. Issue 14's demand, the front within 0.03 m of the reference at the
+# finest mesh: with the upwind k_rl above it is 0.042 m off at 192 cells
+# (first order, 3.4 cells behind). With the arithmetic mean of k_rl and
+# k_rg on the faces (liquidDarcyFlux's second-order choice) the profiles'
+# error is a fraction of the upwind one's and the front lies within one
+# cell of the reference's at every mesh (0.0106, 0.0125, 0.0043 m:
+# 0.21, 0.50, 0.34 cells), not monotone in the cell size: no order is
+# claimed for it (where the front falls between two centres sets the
+# linear marker's error).
+errA = [arith[N]['xf'] - xRef for N in Ns]
+for N, e in zip(Ns, errA):
+    c.le('%d cells, arithmetic k_rl: |front - reference| / cell size'
+         % N, abs(e)/(fr.L/N), 1.0)
+c.le('192 cells, arithmetic k_rl: |front - reference| [m] (issue 14: '
+     '0.03)', abs(errA[2]), 0.03)
+for key, tol, unit in (('S', 0.004, ''), ('T', 0.12, ' [K]')):
+    d = [arith[N]['d' + key] for N in Ns]
+    c.true('arithmetic k_rl: max |%s - %s_ref| falling with refinement'
+           % (key, key), d[0] > d[1] > d[2],
+           ', '.join('%.4g' % v for v in d))
+    c.le('192 cells, arithmetic k_rl: max |%s - %s_ref|%s'
+         % (key, key, unit), d[2], tol)
+    c.true('192 cells: arithmetic k_rl\'s max |%s - %s_ref| below the '
+           'upwind one\'s' % (key, key), d[2] < runs[192]['d' + key],
+           '%.4g vs %.4g' % (d[2], runs[192]['d' + key]))
+ehA = [ThotRef - arith[N]['Thot'] for N in Ns]
+c.true('arithmetic k_rl: T_hot error falling with refinement',
+       ehA[0] > ehA[1] > ehA[2] > 0, ', '.join('%.3f' % e for e in ehA)
+       + ' K')
+c.le('arithmetic k_rl: T_hot extrapolated (2 T_192 - T_96) - reference '
+     '[K]', abs(2*arith[192]['Thot'] - arith[96]['Thot'] - ThotRef), 1.0)
+for N in (96, 192):
+    if arith[N]['q'] is not None:
+        c.le('%d cells, arithmetic k_rl: dry-zone flux / %g W/m2 - 1'
+             % (N, q), abs(arith[N]['q']/q - 1), 1e-7)
+    else:
+        c.true('%d cells, arithmetic k_rl: the last two cells dry' % N,
+               False, '')
+
+# 2b. The diffusivity: the front's shift from tau D_wa = 1e-5 m2/s (96
+# cells, arithmetic k_rl: upwind, the two runs cost 81158 iterations
+# instead of 17771)
 shifts, refShifts, moleFronts = [], [], []
 for tau in ('0.15', '1.0'):
     case = os.path.join(scratch, 'tau_' + tau)
     x, S, T, t = fr.profile(case)
     xr = refFront(os.path.join(case, 'log.reference'))
     moleFronts.append(refFront(os.path.join(case, 'log.referenceMole')))
-    shifts.append(fr.front(x, S) - runs[96]['xf'])
+    shifts.append(fr.front(x, S) - arith[96]['xf'])
     refShifts.append(xr - xRef)
-    print('tortuosity %s (tau D_wa %g m2/s), 96 cells: front %.4f m '
-          '(shift %+.4f), reference %.4f m (shift %+.4f), published form '
-          '%.4f m' % (tau, float(tau)*2e-5, fr.front(x, S), shifts[-1], xr,
-                      refShifts[-1], moleFronts[-1]))
-c.le('96 cells, tau D_wa 3e-6, 2e-5 m2/s: max |shift - reference shift| '
-     '[m]', max(abs(a - b) for a, b in zip(shifts, refShifts)), 0.006)
+    print('tortuosity %s (tau D_wa %g m2/s), 96 cells, arithmetic k_rl: '
+          'front %.4f m (shift %+.4f), reference %.4f m (shift %+.4f), '
+          'published form %.4f m'
+          % (tau, float(tau)*2e-5, fr.front(x, S), shifts[-1], xr,
+             refShifts[-1], moleFronts[-1]))
+c.le('96 cells, arithmetic k_rl, tau D_wa 3e-6, 2e-5 m2/s: max |shift '
+     '- reference shift| [m]',
+     max(abs(a - b) for a, b in zip(shifts, refShifts)), 0.006)
 c.true('the front moves with tau D_wa as the reference\'s (rising), the '
        'published form\'s the other way',
        shifts[0] < 0 < shifts[1] and refShifts[0] < 0 < refShifts[1]
