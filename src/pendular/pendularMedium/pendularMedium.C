@@ -672,6 +672,23 @@ Foam::scalar Foam::pendularMedium::dLnRelativeHumiditydAlphaL
 }
 
 
+Foam::scalar Foam::pendularMedium::vapourSlope
+(
+    const scalar rho,
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    // meniscus: the products in the order of the law before the choice
+    // (bit for bit the same states)
+    if (!kelvinPc_)
+    {
+        return rho*sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL);
+    }
+    return rho*dLnRelativeHumiditydAlphaL(alphaL, sat);
+}
+
+
 Foam::scalar Foam::pendularMedium::dLnRelativeHumiditydT
 (
     const scalar alphaL,
@@ -723,7 +740,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydAlphaL
     {
         return 0;
     }
-    return vapourDensity(alphaL, sat)*dLnRelativeHumiditydAlphaL(alphaL, sat);
+    return vapourSlope(vapourDensity(alphaL, sat), alphaL, sat);
 }
 
 
@@ -839,7 +856,7 @@ Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
     const scalar rhoW = vapourDensity(alphaL, sat);
     const scalar dRhoWdAlpha =
         alphaL > 0
-      ? rhoW*dLnRelativeHumiditydAlphaL(alphaL, sat)
+      ? vapourSlope(rhoW, alphaL, sat)
       : 0;
     return porosity*(rhoL() - rhoW + (1 - alphaL)*dRhoWdAlpha);
 }
@@ -921,7 +938,7 @@ Foam::scalar Foam::pendularMedium::alphaL
             alpha*porosity
            *(
                 rhoL() - rhoW
-              + (1 - alpha)*rhoW*dLnRelativeHumiditydAlphaL(alpha, sat)
+              + vapourSlope((1 - alpha)*rhoW, alpha, sat)
             );
         const scalar Walpha = g + W;
         scalar sNew =
