@@ -8,6 +8,7 @@
 #include "startupReport.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
+#include "capillaryPressureModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -19,6 +20,13 @@ namespace Foam
 const Foam::scalar Foam::pendularMedium::alphaLDry = 1e-100;
 const Foam::scalar Foam::pendularMedium::criticalMargin = 10;
 const Foam::scalar Foam::pendularMedium::alphaLCritical = 1e-9;
+
+const Foam::Enum<Foam::pendularMedium::vapourPressureLaw>
+Foam::pendularMedium::vapourPressureLawNames
+({
+    { vapourPressureLaw::meniscus, "meniscus" },
+    { vapourPressureLaw::kelvin, "kelvin" },
+});
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -65,7 +73,9 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
             kelvin_.surfaceTension().Tmax()
         )
     ),
-    pSatDryOut_(kelvin_.saturationPressure().pSat(dryOutTemperature_))
+    pSatDryOut_(kelvin_.saturationPressure().pSat(dryOutTemperature_)),
+    vapourPressure_(vapourPressureLaw::meniscus),
+    kelvinPc_(nullptr)
 {
     // The split of the water into liquid and vapour (waterModel,
     // run-time selected; default equilibrium)
@@ -173,7 +183,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
                 pendularLimit()
             )
         );
-        wordList allowed;
+        wordList allowed({"vapourPressure"});
         for (const word& key : liquidFlow_->keywords(dict))
         {
             if (key != "rhoLiquid")
@@ -182,6 +192,33 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
             }
         }
         checkedRead::checkKeywords(userDict, allowed);
+
+        // The vapour over the liquid: the menisci's law (default) or
+        // Kelvin's with the capillary pressure of the liquid
+        vapourPressure_ =
+            checkedRead::getChoice
+            (
+                userDict, "vapourPressure", vapourPressureLawNames,
+                vapourPressureLaw::meniscus
+            );
+        if (vapourPressure_ == vapourPressureLaw::kelvin)
+        {
+            const capillaryPressureModel& pc =
+                liquidFlow_->capillaryPressure();
+            if (!pc.finiteAtResidual())
+            {
+                FatalIOErrorInFunction(userDict)
+                    << "vapourPressure kelvin in " << userDict.name()
+                    << ": capillaryPressureModel " << pc.type() << " has"
+                    << " an unbounded p_c at S = Swr, where Kelvin's"
+                    << " vapour pressure would vanish while the cell"
+                    << " still holds liquid: give pcLinearBelowSe (in (0,"
+                    << " 0.5]), or use a law bounded there (leverettJ,"
+                    << " pendular), or vapourPressure meniscus"
+                    << exit(FatalIOError);
+            }
+            kelvinPc_ = &pc;
+        }
     }
 
     checkedRead::check
@@ -596,6 +633,87 @@ void Foam::pendularMedium::report
 }
 
 
+Foam::scalar Foam::pendularMedium::lnRelativeHumidity
+(
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    if (!kelvinPc_)
+    {
+        return sat.kelvinLength*kelvin_.meniscus().K(alphaL);
+    }
+    // Kelvin's law with the liquid's p_c, at T within the laws' range (as
+    // kelvinLength, computed at minimumTemperature below it)
+    const scalar T =
+        min(max(sat.T, minimumTemperature_), dryOutTemperature_);
+    return
+       -kelvinPc_->pc(min(alphaL, scalar(1)), T)*kelvin_.Vm()/(R()*T);
+}
+
+
+Foam::scalar Foam::pendularMedium::dLnRelativeHumiditydAlphaL
+(
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    if (!kelvinPc_)
+    {
+        return sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL);
+    }
+    if (alphaL >= 1)
+    {
+        return 0;
+    }
+    const scalar T =
+        min(max(sat.T, minimumTemperature_), dryOutTemperature_);
+    return -kelvinPc_->dpcdS(alphaL, T)*kelvin_.Vm()/(R()*T);
+}
+
+
+Foam::scalar Foam::pendularMedium::vapourSlope
+(
+    const scalar rho,
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    // meniscus: the products in the order of the law before the choice
+    // (bit for bit the same states)
+    if (!kelvinPc_)
+    {
+        return rho*sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL);
+    }
+    return rho*dLnRelativeHumiditydAlphaL(alphaL, sat);
+}
+
+
+Foam::scalar Foam::pendularMedium::dLnRelativeHumiditydT
+(
+    const scalar alphaL,
+    const saturationState& sat
+) const
+{
+    if (!kelvinPc_)
+    {
+        return sat.dKelvinLengthdT*kelvin_.meniscus().K(alphaL);
+    }
+    // Below the laws' range (NaN included) the law at minimumTemperature:
+    // no slope, as saturation(T)'s
+    const scalar T = sat.T;
+    if (!(T >= minimumTemperature_ && T < dryOutTemperature_))
+    {
+        return 0;
+    }
+    // d/dT [-p_c Vm/(R T)] = -Vm (dp_c/dT - p_c/T)/(R T)
+    const scalar S = min(alphaL, scalar(1));
+    return
+       -kelvin_.Vm()/(R()*T)
+       *(kelvinPc_->dpcdT(S, T) - kelvinPc_->pc(S, T)/T);
+}
+
+
 Foam::scalar Foam::pendularMedium::vapourDensity
 (
     const scalar alphaL,
@@ -607,8 +725,8 @@ Foam::scalar Foam::pendularMedium::vapourDensity
         return 0;
     }
     return
-        Mw()*sat.pSat
-       *std::exp(sat.kelvinLength*kelvin_.meniscus().K(alphaL))/(R()*sat.T);
+        Mw()*sat.pSat*std::exp(lnRelativeHumidity(alphaL, sat))
+       /(R()*sat.T);
 }
 
 
@@ -622,9 +740,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydAlphaL
     {
         return 0;
     }
-    return
-        vapourDensity(alphaL, sat)
-       *sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL);
+    return vapourSlope(vapourDensity(alphaL, sat), alphaL, sat);
 }
 
 
@@ -665,7 +781,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydT
         vapourDensity(alphaL, sat)
        *(
             sat.dLnPSatdT
-          + sat.dKelvinLengthdT*kelvin_.meniscus().K(alphaL)
+          + dLnRelativeHumiditydT(alphaL, sat)
           - 1/sat.T
         );
 }
@@ -740,7 +856,7 @@ Foam::scalar Foam::pendularMedium::dWaterContentdAlphaL
     const scalar rhoW = vapourDensity(alphaL, sat);
     const scalar dRhoWdAlpha =
         alphaL > 0
-      ? rhoW*sat.kelvinLength*kelvin_.meniscus().dKdAlphaL(alphaL)
+      ? vapourSlope(rhoW, alphaL, sat)
       : 0;
     return porosity*(rhoL() - rhoW + (1 - alphaL)*dRhoWdAlpha);
 }
@@ -822,8 +938,7 @@ Foam::scalar Foam::pendularMedium::alphaL
             alpha*porosity
            *(
                 rhoL() - rhoW
-              + (1 - alpha)*rhoW*sat.kelvinLength
-               *kelvin_.meniscus().dKdAlphaL(alpha)
+              + vapourSlope((1 - alpha)*rhoW, alpha, sat)
             );
         const scalar Walpha = g + W;
         scalar sNew =

@@ -1184,6 +1184,279 @@ void testConductivity()
 }
 
 
+
+// * * * * * * * * * * * pendularMedium: Kelvin's vapour pressure * * * * * //
+
+//- A pendularMedium read from a one-cell case (its Time and mesh kept)
+struct caseMedium
+{
+    autoPtr<Time> runTime;
+    autoPtr<fvMesh> mesh;
+    autoPtr<pendularMedium> medium;
+
+    explicit caseMedium(const fileName& caseDir)
+    {
+        runTime.reset
+        (
+            new Time
+            (
+                Time::controlDictName, caseDir.path(),
+                fileName(caseDir.name())
+            )
+        );
+        mesh.reset
+        (
+            new fvMesh
+            (
+                IOobject
+                (
+                    fvMesh::defaultRegion, runTime->timeName(), runTime(),
+                    IOobject::MUST_READ
+                )
+            )
+        );
+        medium.reset(new pendularMedium(mesh()));
+    }
+};
+
+//- vapourPressure kelvin (pendularMedium, the liquidFlow's p_c):
+//  p_w = p_wsat(T) exp(-p_c(alpha, T) M_w/(rho_l R T)).
+//  lawCase: liquidFlow with leverettJ (K 1e-16 m2, phi 0.26, the default
+//  J, S_wr 0.02, S_gr 0.3; sigma(T) vargaftik) and vapourPressure kelvin;
+//  pendularCase: liquidFlow with the pendular law of the medium's own
+//  meniscus and vapourPressure kelvin; meniscusCase: the medium alone
+//  (vapourPressure meniscus, today's law). Checks:
+//  1. p_w of the medium against the closed form with p_c computed here
+//     from Leverett's J and sigma(T) of the medium's surfaceTensionLaw
+//     (round-off: 1e-13 relative); p_c -> 0 (S_e = 1): the saturated
+//     vapour (1e-15);
+//  2. the slopes d ln(p_w/p_wsat)/d alpha, d/dT, d rho_w/d alpha,
+//     d rho_w/dT (fixed alpha and fixed W) and dW/d alpha against central
+//     differences (steps 1e-5 alpha and 1e-2 K: truncation, h^2 times the
+//     third derivative over the first, below 1e-8; round-off eps |f|/(h
+//     |f'|) below 1e-9 here; 1e-6 relative allowed);
+//  3. the inversion W -> alpha_l round trip from three guesses (1e-12)
+//     and the state's vapour density (1e-12);
+//  4. the dry end: below S_wr p_c is constant, so W(alpha) is linear
+//     there and a cell holding less than phi rho_w(0+) holds no liquid
+//     (alpha 0, rho_w = W/phi); just above it alpha_l = (W - phi
+//     rho_w(0+))/(phi (rho_l - rho_w(0+))) exactly (1e-9: cancellation
+//     of W - phi rho_w(0+), 1e-3 of W);
+//  5. pendular law + kelvin = the menisci's law (two codes of the same
+//     closure: kelvinLength K against -p_c Vm/(R T) with p_c = -sigma K):
+//     rho_w, d rho_w/dT, alpha_l(W) within 1e-12.
+void testMediumKelvin
+(
+    const fileName& meniscusCase,
+    const fileName& pendularCase,
+    const fileName& lawCase
+)
+{
+    section("pendularMedium: vapourPressure kelvin (p_c of liquidFlow)");
+
+    const caseMedium law(lawCase);
+    const pendularMedium& m = law.medium();
+    const scalar phi = m.porosity()[0];
+    checkTrue("lawCase: vapourPressure kelvin",
+        m.vapourPressure() == pendularMedium::vapourPressureLaw::kelvin,
+        0, 0, "==");
+    const scalar Vm = m.Mw()/m.rhoL();
+    const scalar R = m.R();
+
+    // Leverett's J of the case, closed form
+    const scalar Swr = 0.02, Sgr = 0.3, K = 1e-16, phiJ = 0.26;
+    auto pcExact = [&](const scalar S, const scalar T)
+    {
+        const scalar Se =
+            min(max((S - Swr)/(1 - Swr - Sgr), scalar(0)), scalar(1));
+        const scalar J =
+            1.417*(1 - Se) - 2.120*sqr(1 - Se) + 1.263*pow3(1 - Se);
+        return
+            m.kelvin().surfaceTension().sigma(T)*Foam::sqrt(phiJ/K)*J;
+    };
+    auto relErr = [](const scalar d, const scalar fd, const scalar s)
+    {
+        return mag(d - fd)/max(mag(fd), s);
+    };
+
+    const scalar Ts[] = {280, 330, 400, 500};
+    const scalar alphas[] = {1e-3, 0.05, 0.3, 0.6, 0.8};
+    scalar errPw = 0, pcMax = 0, errSat = 0;
+    scalar errDa = 0, errDT = 0, errRhoDa = 0, errRhoDT = 0, errRhoDTW = 0;
+    scalar errDW = 0, errTrip = 0, errRho = 0;
+    for (const scalar T : Ts)
+    {
+        const pendularMedium::saturationState sat = m.saturation(T);
+        for (const scalar a : alphas)
+        {
+            // 1. closed form
+            const scalar rhoW = m.vapourDensity(a, sat);
+            const scalar pw = rhoW*R*T/m.Mw();
+            const scalar pc = pcExact(a, T);
+            pcMax = max(pcMax, pc);
+            const scalar pwExact =
+                m.saturationPressure(T)
+               *Foam::exp(-pc*m.Mw()/(m.rhoL()*R*T));
+            if (a >= 1 - Sgr)
+            {
+                errSat = max(errSat, mag(pw/m.saturationPressure(T) - 1));
+            }
+            errPw = max(errPw, mag(pw - pwExact)/pwExact);
+
+            // 2. slopes against central differences, relative to |FD| or
+            // a floor where the slope vanishes (the flat ends of p_c)
+            const scalar ha = 1e-5*a;
+            const scalar lnScale =
+                Vm/(R*T)*m.kelvin().surfaceTension().sigma(T)
+               *Foam::sqrt(phiJ/K);
+            const scalar fdLnA =
+                (m.lnRelativeHumidity(a + ha, sat)
+               - m.lnRelativeHumidity(a - ha, sat))/(2*ha);
+            errDa =
+                max
+                (
+                    errDa,
+                    relErr(m.dLnRelativeHumiditydAlphaL(a, sat), fdLnA,
+                        1e-3*lnScale)
+                );
+            const scalar hT = 1e-2;
+            const pendularMedium::saturationState satP = m.saturation(T + hT);
+            const pendularMedium::saturationState satM = m.saturation(T - hT);
+            const scalar fdLnT =
+                (m.lnRelativeHumidity(a, satP) - m.lnRelativeHumidity(a, satM))
+               /(2*hT);
+            errDT =
+                max
+                (
+                    errDT,
+                    relErr(m.dLnRelativeHumiditydT(a, sat), fdLnT,
+                        1e-3*lnScale/T)
+                );
+            const scalar fdRhoA =
+                (m.vapourDensity(a + ha, sat) - m.vapourDensity(a - ha, sat))
+               /(2*ha);
+            errRhoDa =
+                max
+                (
+                    errRhoDa,
+                    relErr(m.dVapourDensitydAlphaL(a, sat), fdRhoA,
+                        1e-3*lnScale*rhoW)
+                );
+            const scalar fdRhoT =
+                (m.vapourDensity(a, satP) - m.vapourDensity(a, satM))/(2*hT);
+            errRhoDT =
+                max(errRhoDT, relErr(m.dVapourDensitydT(a, sat), fdRhoT, 0));
+            const scalar W = m.waterContent(a, sat, phi);
+            const scalar fdRhoTW =
+                (
+                    m.vapourDensity(m.alphaL(W, satP, phi, a), satP)
+                  - m.vapourDensity(m.alphaL(W, satM, phi, a), satM)
+                )/(2*hT);
+            errRhoDTW =
+                max
+                (
+                    errRhoDTW,
+                    relErr(m.dVapourDensitydTAtFixedW(a, sat, phi), fdRhoTW,
+                        1e-3*rhoW/T)
+                );
+            const scalar fdW =
+                (m.waterContent(a + ha, sat, phi)
+               - m.waterContent(a - ha, sat, phi))/(2*ha);
+            errDW =
+                max
+                (
+                    errDW,
+                    relErr(m.dWaterContentdAlphaL(a, sat, phi), fdW, 0)
+                );
+
+            // 3. round trip from three guesses
+            for (const scalar guess : {scalar(0), a, scalar(0.5)})
+            {
+                const scalar aBack = m.alphaL(W, sat, phi, guess);
+                errTrip = max(errTrip, mag(aBack - a)/a);
+                errRho =
+                    max
+                    (
+                        errRho,
+                        mag(m.vapourDensity(W, aBack, sat, phi) - rhoW)/rhoW
+                    );
+            }
+        }
+    }
+    Info<< "    p_c up to " << pcMax << " Pa (ln(p_w/p_wsat) down to "
+        << -pcMax*Vm/(R*280) << ")" << endl;
+    checkAbs("1. p_w vs p_wsat exp(-p_c M_w/(rho_l R T)), rel",
+        errPw, 0, 1e-13);
+    checkAbs("1. p_c = 0 (S_e = 1): |p_w/p_wsat - 1|", errSat, 0, 1e-15);
+    checkAbs("2. d ln(RH)/d alpha vs central FD, rel", errDa, 0, 1e-6);
+    checkAbs("2. d ln(RH)/dT vs central FD, rel", errDT, 0, 1e-6);
+    checkAbs("2. d rho_w/d alpha vs central FD, rel", errRhoDa, 0, 1e-6);
+    checkAbs("2. d rho_w/dT (fixed alpha) vs central FD, rel",
+        errRhoDT, 0, 1e-6);
+    checkAbs("2. d rho_w/dT (fixed W) vs central FD, rel",
+        errRhoDTW, 0, 1e-6);
+    checkAbs("2. dW/d alpha vs central FD, rel", errDW, 0, 1e-6);
+    checkAbs("3. alpha_l(W(alpha_l)) round trip, rel", errTrip, 0, 1e-12);
+    checkAbs("3. rho_w of the inverted state, rel", errRho, 0, 1e-12);
+
+    // 4. the dry end at 330 K
+    {
+        const scalar T = 330;
+        const pendularMedium::saturationState sat = m.saturation(T);
+        const scalar rho0 = m.vapourDensity(1e-9, sat);
+        const scalar rho0Exact =
+            m.Mw()*m.saturationPressure(T)
+           *Foam::exp(-pcExact(0, T)*m.Mw()/(m.rhoL()*R*T))/(R*T);
+        checkRel("4. rho_w(0+) vs closed form", rho0, rho0Exact, 1e-13);
+        const scalar Wk = phi*rho0;
+        const scalar aDry = m.alphaL(0.5*Wk, sat, phi, 0.01);
+        checkAbs("4. alpha_l at W = phi rho_w(0+)/2", aDry, 0, 0);
+        checkRel("4. rho_w at W = phi rho_w(0+)/2: W/phi",
+            m.vapourDensity(0.5*Wk, aDry, sat, phi), 0.5*Wk/phi, 1e-15);
+        const scalar W = 1.001*Wk;
+        checkRel("4. alpha_l at W = 1.001 phi rho_w(0+): linear below S_wr",
+            m.alphaL(W, sat, phi, 0.01), (W - Wk)/(phi*(m.rhoL() - rho0)),
+            1e-9);
+    }
+
+    // 5. the pendular law through Kelvin = the menisci's law
+    {
+        const caseMedium men(meniscusCase);
+        const caseMedium pen(pendularCase);
+        const pendularMedium& a = men.medium();
+        const pendularMedium& b = pen.medium();
+        checkTrue("meniscusCase: vapourPressure meniscus",
+            a.vapourPressure() == pendularMedium::vapourPressureLaw::meniscus,
+            0, 0, "==");
+        checkTrue("pendularCase: vapourPressure kelvin",
+            b.vapourPressure() == pendularMedium::vapourPressureLaw::kelvin,
+            0, 0, "==");
+        scalar errR = 0, errT = 0, errA = 0, lnMin = 0;
+        for (const scalar T : Ts)
+        {
+            const pendularMedium::saturationState sa = a.saturation(T);
+            const pendularMedium::saturationState sb = b.saturation(T);
+            for (const scalar al : {1e-6, 1e-4, 1e-2, 0.04})
+            {
+                const scalar ra = a.vapourDensity(al, sa);
+                lnMin = min(lnMin, a.lnRelativeHumidity(al, sa));
+                errR = max(errR, mag(b.vapourDensity(al, sb) - ra)/ra);
+                const scalar da = a.dVapourDensitydT(al, sa);
+                errT =
+                    max(errT, mag(b.dVapourDensitydT(al, sb) - da)/mag(da));
+                const scalar W = a.waterContent(al, sa, phi);
+                errA = max(errA, mag(b.alphaL(W, sb, phi, 0) - al)/al);
+            }
+        }
+        Info<< "    ln(p_w/p_wsat) of the menisci down to " << lnMin << endl;
+        checkAbs("5. pendular+kelvin vs meniscus: rho_w, rel", errR, 0, 1e-12);
+        checkAbs("5. pendular+kelvin vs meniscus: d rho_w/dT, rel",
+            errT, 0, 1e-12);
+        checkAbs("5. pendular+kelvin: alpha_l(W of the menisci), rel",
+            errA, 0, 1e-12);
+    }
+}
+
 // * * * * * * * * * * * pendularMedium at the critical point * * * * * * * //
 
 //- The saturation state of pendularMedium (default laws: wagnerPruss and
@@ -1717,6 +1990,16 @@ int main(int argc, char* argv[])
     if (argc == 3 && std::string(argv[1]) == "-medium")
     {
         testMediumCriticalPoint(fileName(argv[2]));
+    }
+
+    // testPendularModels -kelvin MENISCUS PENDULAR LAW: vapourPressure
+    // kelvin on three one-cell cases (testMediumKelvin)
+    if (argc == 5 && std::string(argv[1]) == "-kelvin")
+    {
+        testMediumKelvin
+        (
+            fileName(argv[2]), fileName(argv[3]), fileName(argv[4])
+        );
     }
 
     Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"

@@ -334,6 +334,12 @@ int main(int argc, char *argv[])
     );
     argList::addBoolOption
     (
+        "kelvin",
+        "the case's liquidFlow has vapourPressure kelvin (van Genuchten):"
+        " states, Jacobian and Newton only (2K)"
+    );
+    argList::addBoolOption
+    (
         "roundOffBound",
         "1b: bound |R_c - R| of a cell and balance by the round-off of its"
         " terms too, 8 eps sum |terms|"
@@ -400,6 +406,139 @@ int main(int argc, char *argv[])
     const scalarField x0(pendularResidual::pack(T0, p0, W0, pRef));
     const scalarField x(pendularResidual::pack(T, p, W, pRef));
     pendularResidual res(medium, T, p, pw, pRef, x0, alpha, dt);
+
+    // 2K. vapourPressure kelvin (the case's liquidFlow: van Genuchten,
+    // alpha 2e-5 1/Pa, n 2, S_wr = S_gr = 0, regularised below S_e =
+    // 0.01; the vapour at p_wsat exp(-p_c M_w/(rho_l R T))), on the step's
+    // state with the cells below alpha_l 0.02 given 0.02 of water more
+    // (alpha_l >= 0.0199 then; the closed form below holds above S_e =
+    // 0.01): the state of every cell against
+    // the closed form, the W -> state round trip, the vapour away from the
+    // menisci's law (else the closure would not be in use), the Jacobian
+    // (1e-6) there and with cells 8-10 at 330-340 K, Newton from the old
+    // state (quadratic)
+    if (args.found("kelvin"))
+    {
+        const liquidFlow* liquid = medium.liquidFlowPtr();
+        checkTrue
+        (
+            "the soil has liquidFlow with vapourPressure kelvin",
+            liquid
+         && medium.vapourPressure()
+         == pendularMedium::vapourPressureLaw::kelvin,
+            0, 0, "=="
+        );
+        if (!liquid)
+        {
+            return 1;
+        }
+        section("2K. vapourPressure kelvin: states, Jacobian, Newton");
+        const scalar aVG = 2e-5, nVG = 2, mVG = 1 - 1/nVG;
+        auto pcVG = [&](const scalar S)
+        {
+            return
+                S >= 1 ? scalar(0)
+              : Foam::pow(Foam::pow(S, -1/mVG) - 1, 1/nVG)/aVG;
+        };
+        scalarField xK(x);
+        forAll(T, c)
+        {
+            if (res.state(c, &x[3*c]).alpha < 0.02)
+            {
+                xK[3*c + 2] += phi[c]*medium.rhoL()*0.02;
+            }
+        }
+        const scalar R = medium.R();
+        const scalar Mw = medium.Mw();
+        scalar errPw = 0, errW = 0, offMeniscus = 0, lnMin = 0;
+        scalar alphaMin = GREAT;
+        forAll(T, c)
+        {
+            const pendularResidual::cellState s = res.state(c, &xK[3*c]);
+            const scalar pw = s.rhoW*R*s.T/Mw;
+            const scalar pc = pcVG(s.alpha);
+            const scalar pwExact =
+                medium.saturationPressure(s.T)
+               *Foam::exp(-pc*Mw/(medium.rhoL()*R*s.T));
+            errPw = max(errPw, mag(pw - pwExact)/pwExact);
+            lnMin = min(lnMin, -pc*Mw/(medium.rhoL()*R*s.T));
+            errW =
+                max
+                (
+                    errW,
+                    mag
+                    (
+                        phi[c]*(s.alpha*medium.rhoL() + (1 - s.alpha)*s.rhoW)
+                      - xK[3*c + 2]
+                    )/xK[3*c + 2]
+                );
+            const scalar pwMeniscus =
+                medium.saturationPressure(s.T)
+               *Foam::exp
+                (
+                    medium.kelvin().lnRelativeHumidity(s.alpha, s.T)
+                );
+            offMeniscus = max(offMeniscus, mag(pw/pwMeniscus - 1));
+            alphaMin = min(alphaMin, s.alpha);
+        }
+        checkAtLeast
+        (
+            "min alpha_l over cells (above S_e = 0.01)", alphaMin, 0.011, 0
+        );
+        Info<< "    ln(p_w/p_wsat) down to " << lnMin << endl;
+        checkAbs
+        (
+            "p_w of every cell vs p_wsat exp(-p_c M_w/(rho_l R T)), rel",
+            errPw, 0, 1e-13
+        );
+        checkAbs
+        (
+            "phi (alpha_l rho_l + (1 - alpha_l) rho_w) - W of every cell, rel",
+            errW, 0, 1e-13
+        );
+        checkAtLeast
+        (
+            "max |p_w/p_w(menisci) - 1| over cells", offMeniscus, 1e-3, 0
+        );
+        jacobianCheck(mesh, res, xK, "kelvin, alpha_l >= 0.02");
+        scalarField xHot(xK);
+        for (label c = 8; c <= 10; ++c)
+        {
+            xHot[3*c] = 330 + 5*(c - 8);
+        }
+        jacobianCheck(mesh, res, xHot, "kelvin, cells 8-10 at 330-340 K");
+
+        // Newton from the old state (alpha_l of time 0 as the guess), as
+        // in 3: the scaled residuals to the round-off floor, order >= 1.8
+        pendularResidual newtonRes(medium, T, p, pw, pRef, x0, alpha0, dt);
+        blockSystem newtonSys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+        const scalar floor = 0.1;
+        scalarField xn(x0);
+        const DynamicList<scalar> rn =
+            newton(newtonRes, newtonSys, tol, xn, true, 15, floor);
+        checkTrue
+        (
+            "kelvin: Newton with chop: iterations to the round-off floor",
+            rn.last() < floor, rn.size() - 1, 15, "<="
+        );
+        scalar order = 0;
+        for (label k = 1; k + 1 < rn.size(); ++k)
+        {
+            if (rn[k + 1] > floor)
+            {
+                order =
+                    Foam::log(rn[k + 1]/rn[k])/Foam::log(rn[k]/rn[k - 1]);
+            }
+        }
+        checkAtLeast
+        (
+            "kelvin: order of convergence, last step above floor", order,
+            1.8, 0
+        );
+        Info<< nl << nChecks - nFailed << " of " << nChecks
+            << " checks passed" << endl;
+        return nFailed > 0;
+    }
 
     // 2L. with the liquid's capillary Darcy flux (the case's liquidFlow,
     // on the state of the step without it): the Jacobian against a central
