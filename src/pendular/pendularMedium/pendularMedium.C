@@ -291,16 +291,14 @@ Foam::pendularMedium::lawState
 
 
 Foam::pendularMedium::saturationState
-Foam::pendularMedium::saturation(const scalar T) const
+Foam::pendularMedium::saturation(const scalar T, const bool slopes) const
 {
     if (std::isnan(T) || T < minimumTemperature_)
     {
         // Out of the laws' range (an iterate the solver rejects; NaN
         // included): the laws at their lowest temperature, without slopes
-        saturationState sat = lawState(minimumTemperature_);
+        saturationState sat = lawState(minimumTemperature_, false);
         sat.T = T;
-        sat.dLnPSatdT = 0;
-        sat.dKelvinLengthdT = 0;
         return sat;
     }
     if (T >= dryOutTemperature_)
@@ -309,25 +307,14 @@ Foam::pendularMedium::saturation(const scalar T) const
         // air; p_wsat held at its value at T_d for relative humidities
         return {T, pSatDryOut_, 0, 0, 0, true};
     }
-    return lawState(T);
+    return lawState(T, slopes);
 }
 
 
 Foam::pendularMedium::saturationState
 Foam::pendularMedium::saturationValues(const scalar T) const
 {
-    // saturation(T) without the slopes
-    if (std::isnan(T) || T < minimumTemperature_)
-    {
-        saturationState sat = lawState(minimumTemperature_, false);
-        sat.T = T;
-        return sat;
-    }
-    if (T >= dryOutTemperature_)
-    {
-        return {T, pSatDryOut_, 0, 0, 0, true};
-    }
-    return lawState(T, false);
+    return saturation(T, false);
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "liquidDarcyFlux.H"
+#include "harmonicFaceMean.H"
 #include "checkedRead.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -79,7 +80,7 @@ Foam::scalar Foam::liquidDarcyFlux::massFlux
 {
     // The potential difference driving the flow from o to n
     const scalar dPhi = (n.pg - o.pg) - (n.pc - o.pc) - rhol_*(g_ & d);
-    const scalar Kf = 1/((1 - w)/o.K + w/n.K);
+    const scalar Kf = harmonicFaceMean(o.K, n.K, w);
     const scalar krf = faceValue(o.krl, n.krl, dPhi, w);
     return -rhol_*Kf*krf/mul_*magSf*delta*dPhi;
 }

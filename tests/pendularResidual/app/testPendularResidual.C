@@ -149,6 +149,43 @@ FixedList<scalar, 3> scaledResiduals
     return r;
 }
 
+//- Calls visit(o, n, patchi, i, F) with the fluxes F[3] the residual gives
+//  at x on every internal face i (o, n its cells, patchi -1) and on every
+//  face of a patch neither coupled nor empty (o its cell, n -1, i its index
+//  in patch patchi): serial
+template<class Visitor>
+void forEachFaceFlux
+(
+    const fvMesh& mesh,
+    const pendularResidual& res,
+    const scalarField& x,
+    Visitor visit
+)
+{
+    scalar F[3];
+    for (label f = 0; f < mesh.nInternalFaces(); ++f)
+    {
+        const label o = mesh.faceOwner()[f];
+        const label n = mesh.faceNeighbour()[f];
+        res.faceFlux(f, &x[3*o], &x[3*n], F);
+        visit(o, n, label(-1), f, F);
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        {
+            continue;
+        }
+        forAll(patch, i)
+        {
+            const label c = patch.faceCells()[i];
+            res.boundaryFlux(patch.start() + i, &x[3*c], F);
+            visit(c, label(-1), label(patchi), label(i), F);
+        }
+    }
+}
+
 //- Per cell and balance (3 c + k), the sum of the magnitudes of the terms
 //  of its residual at x: the cell term and the fluxes of its faces
 //  (serial: internal and boundary faces)
@@ -170,34 +207,21 @@ tmp<scalarField> termSums
             s[3*c + k] += mag(F[k]);
         }
     }
-    for (label f = 0; f < mesh.nInternalFaces(); ++f)
-    {
-        const label o = mesh.faceOwner()[f];
-        const label n = mesh.faceNeighbour()[f];
-        res.faceFlux(f, &x[3*o], &x[3*n], F);
-        for (label k = 0; k < 3; ++k)
+    forEachFaceFlux
+    (
+        mesh, res, x,
+        [&](label o, label n, label, label, const scalar* Ff)
         {
-            s[3*o + k] += mag(F[k]);
-            s[3*n + k] += mag(F[k]);
-        }
-    }
-    forAll(mesh.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh.boundary()[patchi];
-        if (patch.coupled() || isA<emptyFvPatch>(patch))
-        {
-            continue;
-        }
-        forAll(patch, i)
-        {
-            const label c = patch.faceCells()[i];
-            res.boundaryFlux(patch.start() + i, &x[3*c], F);
             for (label k = 0; k < 3; ++k)
             {
-                s[3*c + k] += mag(F[k]);
+                s[3*o + k] += mag(Ff[k]);
+                if (n >= 0)
+                {
+                    s[3*n + k] += mag(Ff[k]);
+                }
             }
         }
-    }
+    );
     return ts;
 }
 
@@ -996,39 +1020,24 @@ int main(int argc, char *argv[])
         );
         scalar scale[3] = {0, 0, 0}, err[3] = {0, 0, 0};
         const surfaceScalarField* Fs[3] = {&st.Fw(), &st.Fa(), &st.FE()};
-        scalar F[3];
-        for (label f = 0; f < mesh.nInternalFaces(); ++f)
-        {
-            const label o = mesh.faceOwner()[f];
-            const label n = mesh.faceNeighbour()[f];
-            res.faceFlux(f, &xs[3*o], &xs[3*n], F);
-            for (label k = 0; k < 3; ++k)
-            {
-                scale[k] = max(scale[k], mag(F[k]));
-                err[k] = max(err[k], mag(F[k] - (*Fs[k])[f]));
-            }
-        }
         label nPatchFaces = 0;
-        forAll(mesh.boundary(), patchi)
-        {
-            const fvPatch& patch = mesh.boundary()[patchi];
-            if (patch.coupled() || isA<emptyFvPatch>(patch))
+        forEachFaceFlux
+        (
+            mesh, res, xs,
+            [&](label, label, label patchi, label i, const scalar* F)
             {
-                continue;
-            }
-            forAll(patch, i)
-            {
-                const label c = patch.faceCells()[i];
-                res.boundaryFlux(patch.start() + i, &xs[3*c], F);
                 for (label k = 0; k < 3; ++k)
                 {
-                    const scalar Fk = Fs[k]->boundaryField()[patchi][i];
+                    const scalar Fk =
+                        patchi < 0
+                      ? (*Fs[k])[i]
+                      : Fs[k]->boundaryField()[patchi][i];
                     scale[k] = max(scale[k], mag(F[k]));
                     err[k] = max(err[k], mag(F[k] - Fk));
                 }
-                ++nPatchFaces;
+                nPatchFaces += (patchi >= 0);
             }
-        }
+        );
         checkAtLeast("patch faces compared", nPatchFaces, 1, 0);
         const char* fluxNames[3] = {"F_w", "F_a", "F_E"};
         for (label k = 0; k < 3; ++k)
