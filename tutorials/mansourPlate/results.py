@@ -6,7 +6,9 @@ plateau (start: T reaches 95 C; end: T reaches 105 C; its length in
 minutes; times interpolated between time steps, None if not reached), T at
 1, 3 and 6 h, and the peak T over the 6 h; for pendularFoam the largest
 relative water, air and energy imbalance of its log, for ahcFoam the
-relative energy imbalance. Then pendularFoam minus ahcFoam for each figure.
+relative energy imbalance. Then pendularFoam minus the ahcFoam run of the
+same sand and water (PAIRS) for each figure, and where the run expected to
+stop stopped.
 
 Writes results.txt (the tables of the README) and figures.csv (every
 figure at full precision, name,value,unit).
@@ -27,7 +29,12 @@ END = 21600.0
 SENSORS = ('1.4cm', '2.3cm', '3.2cm', '6.2cm', '10.6cm')
 RUNS = (('plate_ahc', 'ahcFoam (AHC conduction)'),
         ('plate_pend', 'pendularFoam, no liquid flow'),
+        ('plate_ahc_sat', 'ahcFoam, phi 0.3585, alpha_l0 0.99'),
+        ('plate_pend_sat', 'pendularFoam, phi 0.3585, alpha_l0 0.99'),
         ('plate_pend_lf', 'pendularFoam, liquidFlow + gravity'))
+# pendularFoam run -> the ahcFoam run with the same sand and water
+PAIRS = (('plate_pend', 'plate_ahc'), ('plate_pend_sat', 'plate_ahc_sat'),
+         ('plate_pend_lf', 'plate_ahc'))
 figs = ht.Figures()
 out = []
 
@@ -111,8 +118,11 @@ for sen in SENSORS:
     say()
 
 # What the coupled model changes: pendularFoam minus ahcFoam
-ahc = res[0][2]
-for name, label, r in res[1:]:
+byName = dict((name, r) for name, _, r in res)
+for name, label, r in res:
+    if name not in dict(PAIRS):
+        continue
+    ahc = byName[dict(PAIRS)[name]]
     say('%s minus ahcFoam:' % label)
     for sen in SENSORS:
         d = {}
@@ -136,6 +146,19 @@ for name, label, r in res:
     say('| %s | %s | %s | %s |' % (
         label, fmt(r.get('balance_water'), '%.1e'),
         fmt(r.get('balance_air'), '%.1e'), fmt(r.get('balance_energy'), '%.1e')))
+say()
+
+# The run expected to stop: where it stopped (README, "What does not run")
+for name in ('plate_pend_sat999',):
+    log = os.path.join('run', name, 'log.pendularFoam')
+    if not os.path.exists(log):
+        continue
+    times = [float(l.split()[2]) for l in open(log) if l.startswith('Time = ')]
+    status = int(open(os.path.join('run', name, 'status')).read())
+    figs.add(name + '.stopTime', times[-1] if times else 0.0, 's')
+    figs.add(name + '.status', status, '-')
+    say('%s: stopped at t = %.1f s (exit status %d)'
+        % (name, times[-1] if times else 0.0, status))
 say()
 
 open('results.txt', 'w').write('\n'.join(out) + '\n')
