@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""mansourPlate: the figures of the runs in run/ (see Allrun).
+
+For each run and each sensor depth (1.4, 2.3, 3.2, 6.2, 10.6 cm): the 100 C
+plateau (start: T reaches 95 C; end: T reaches 105 C; its length in
+minutes; times interpolated between time steps, None if not reached), T at
+1, 3 and 6 h, and the peak T over the 6 h; for pendularFoam the largest
+relative water, air and energy imbalance of its log, for ahcFoam the
+relative energy imbalance. Then pendularFoam minus the ahcFoam run of the
+same sand and water (PAIRS) for each figure, and where the run expected to
+stop stopped.
+
+Writes results.txt (the tables of the README) and figures.csv (every
+figure at full precision, name,value,unit).
+"""
+
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', 'etc', 'python'))
+import hearthTutorial as ht
+
+os.chdir(os.path.dirname(os.path.abspath(__file__)))
+
+HOUR = 3600.0
+END = 21600.0
+SENSORS = ('1.4cm', '2.3cm', '3.2cm', '6.2cm', '10.6cm')
+RUNS = (('plate_ahc', 'ahcFoam (AHC conduction)'),
+        ('plate_pend', 'pendularFoam, no liquid flow'),
+        ('plate_ahc_sat', 'ahcFoam, phi 0.3585, alpha_l0 0.99'),
+        ('plate_pend_sat', 'pendularFoam, phi 0.3585, alpha_l0 0.99'),
+        ('plate_pend_lf', 'pendularFoam, liquidFlow + gravity'))
+# pendularFoam run -> the ahcFoam run with the same sand and water
+PAIRS = (('plate_pend', 'plate_ahc'), ('plate_pend_sat', 'plate_ahc_sat'),
+         ('plate_pend_lf', 'plate_ahc'))
+figs = ht.Figures()
+out = []
+
+
+def say(s=''):
+    out.append(s)
+
+
+def fmt(v, spec):
+    return '-' if v is None or (isinstance(v, float) and math.isnan(v)) \
+        else spec % v
+
+
+def analyse(name):
+    case = os.path.join('run', name)
+    s = ht.sensors_of(case)
+    t = s['time_s']
+    if abs(t[-1] - END) > 1e-6*END:
+        raise SystemExit('results.py: run/%s stopped at t = %g s, not %g'
+                         % (name, t[-1], END))
+    r = {}
+    for sen in SENSORS:
+        T = s['d' + sen]
+        a, b = ht.crossing(t, T, 95.0), ht.crossing(t, T, 105.0)
+        r['start_' + sen] = None if a is None else a/60.0
+        r['end_' + sen] = None if b is None else b/60.0
+        r['plateau_' + sen] = None if a is None or b is None else (b - a)/60.0
+        for h in (1, 3, 6):
+            r['T%dh_%s' % (h, sen)] = ht.interpolate(t, T, h*HOUR)
+        r['peak_' + sen] = ht.peak(t, T)[0]
+    log = os.path.join(case, 'log.pendularFoam')
+    if os.path.exists(log):
+        r.update(balances(log))
+    else:
+        b = ht.energy_balance(os.path.join(case, 'log.ahcFoam'))
+        r['balance_energy'] = abs(b['relative'])
+    for k, v in r.items():
+        unit = 'min' if k.split('_')[0] in ('start', 'end', 'plateau') \
+            else '-' if k.startswith('balance') else 'C'
+        figs.add('%s.%s' % (name, k), v, unit)
+    return r
+
+
+def balances(log):
+    """Largest |relative imbalance| of the water, air and energy balances
+    of a pendularFoam log (every block)."""
+    import re
+    worst = {'balance_water': 0.0, 'balance_air': 0.0, 'balance_energy': 0.0}
+    kind = None
+    with open(log) as f:
+        for line in f:
+            m = re.match(r'(Water|Air|Energy) balance at t', line)
+            if m:
+                kind = 'balance_' + m.group(1).lower()
+                continue
+            m = re.search(r'imbalance\s+= \S+ \(relative (\S+)\)', line)
+            if m and kind:
+                worst[kind] = max(worst[kind], abs(float(m.group(1))))
+                kind = None
+    return worst
+
+
+nCells = int(open('run/nCells').read())
+say('mansourPlate: 1-D column under the centre of the 400 C plate, %d cells'
+    % nCells)
+say()
+res = [(name, label, analyse(name)) for name, label in RUNS
+       if os.path.isdir(os.path.join('run', name))]
+
+for sen in SENSORS:
+    say('Sensor at %s' % sen)
+    say('| run | 95 C [min] | 105 C [min] | plateau [min] | T 1 h [C] '
+        '| T 3 h [C] | T 6 h [C] | peak [C] |')
+    say('|---|---|---|---|---|---|---|---|')
+    for name, label, r in res:
+        say('| %s | %s | %s | %s | %s | %s | %s | %s |' % (
+            label, fmt(r['start_' + sen], '%.0f'), fmt(r['end_' + sen], '%.0f'),
+            fmt(r['plateau_' + sen], '%.0f'), fmt(r['T1h_' + sen], '%.1f'),
+            fmt(r['T3h_' + sen], '%.1f'), fmt(r['T6h_' + sen], '%.1f'),
+            fmt(r['peak_' + sen], '%.1f')))
+    say()
+
+# What the coupled model changes: pendularFoam minus ahcFoam
+byName = dict((name, r) for name, _, r in res)
+for name, label, r in res:
+    if name not in dict(PAIRS):
+        continue
+    ahc = byName[dict(PAIRS)[name]]
+    say('%s minus ahcFoam:' % label)
+    for sen in SENSORS:
+        d = {}
+        for k in ('start', 'end', 'plateau', 'T1h', 'T3h', 'T6h', 'peak'):
+            a, b = ahc[k + '_' + sen], r[k + '_' + sen]
+            d[k] = None if a is None or b is None else b - a
+            figs.add('%s.minusAhc.%s_%s' % (name, k, sen), d[k],
+                     'min' if k in ('start', 'end', 'plateau') else 'C')
+        say('  %-6s: 95 C %s min, 105 C %s min, plateau %s min, '
+            'T 1/3/6 h %s/%s/%s C, peak %s C' % (
+                sen, fmt(d['start'], '%+.0f'), fmt(d['end'], '%+.0f'),
+                fmt(d['plateau'], '%+.0f'), fmt(d['T1h'], '%+.1f'),
+                fmt(d['T3h'], '%+.1f'), fmt(d['T6h'], '%+.1f'),
+                fmt(d['peak'], '%+.1f')))
+    say()
+
+say('Largest relative imbalance (every write)')
+say('| run | water | air | energy |')
+say('|---|---|---|---|')
+for name, label, r in res:
+    say('| %s | %s | %s | %s |' % (
+        label, fmt(r.get('balance_water'), '%.1e'),
+        fmt(r.get('balance_air'), '%.1e'), fmt(r.get('balance_energy'), '%.1e')))
+say()
+
+# The run expected to stop: where it stopped (README, "What does not run")
+for name in ('plate_pend_sat999',):
+    log = os.path.join('run', name, 'log.pendularFoam')
+    if not os.path.exists(log):
+        continue
+    times = [float(l.split()[2]) for l in open(log) if l.startswith('Time = ')]
+    status = int(open(os.path.join('run', name, 'status')).read())
+    figs.add(name + '.stopTime', times[-1] if times else 0.0, 's')
+    figs.add(name + '.status', status, '-')
+    say('%s: stopped at t = %.1f s (exit status %d)'
+        % (name, times[-1] if times else 0.0, status))
+say()
+
+open('results.txt', 'w').write('\n'.join(out) + '\n')
+figs.write('figures.csv')
