@@ -312,6 +312,29 @@ def log_stats(log):
 
 
 # --------------------------------------------------------------------------
+# Markdown tables of results
+
+def fmt(v, spec):
+    """v formatted by spec, or '-' when it is None or NaN."""
+    return '-' if v is None or (isinstance(v, float) and math.isnan(v)) \
+        else spec % v
+
+
+def table(say, title, runs, rows):
+    """A markdown table of runs, one line per run, passed line by line to
+    say (a function of one string): runs a list of (label, results dict),
+    rows the columns (label, key, scale, format); a missing value '-'."""
+    say(title)
+    say('| run | ' + ' | '.join(r[0] for r in rows) + ' |')
+    say('|---|' + '---|'*len(rows))
+    for label, r in runs:
+        say('| %s | ' % label + ' | '.join(
+            fmt(None if r.get(k) is None else r[k]*sc, f)
+            for _, k, sc, f in rows) + ' |')
+    say()
+
+
+# --------------------------------------------------------------------------
 # figures.csv
 
 class Figures:

@@ -178,21 +178,11 @@ def balances(log):
     return worst
 
 
-def fmt(v, spec):
-    return '-' if v is None or (isinstance(v, float) and math.isnan(v)) \
-        else spec % v
+fmt = ht.fmt
 
 
 def table(title, runs, rows):
-    """rows: (label, key, scale, format)"""
-    say(title)
-    say('| run | ' + ' | '.join(r[0] for r in rows) + ' |')
-    say('|---|' + '---|'*len(rows))
-    for label, r in runs:
-        say('| %s | ' % label + ' | '.join(
-            fmt(None if r.get(k) is None else r[k]*sc, f)
-            for _, k, sc, f in rows) + ' |')
-    say()
+    ht.table(say, title, runs, rows)
 
 
 nCells = int(open('run/nCells').read())

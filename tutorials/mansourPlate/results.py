@@ -43,9 +43,7 @@ def say(s=''):
     out.append(s)
 
 
-def fmt(v, spec):
-    return '-' if v is None or (isinstance(v, float) and math.isnan(v)) \
-        else spec % v
+fmt = ht.fmt
 
 
 def analyse(name):

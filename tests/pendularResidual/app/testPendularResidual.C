@@ -344,6 +344,23 @@ DynamicList<scalar> newton
     return r;
 }
 
+//- The order of convergence of Newton's residual history r (r[k] the
+//  scaled residual after k iterations) at its last step still above the
+//  round-off floor: log(r_k+1/r_k)/log(r_k/r_k-1); 0 if there is none
+scalar convergenceOrder(const DynamicList<scalar>& r, const scalar floor)
+{
+    scalar order = 0;
+    for (label k = 1; k + 1 < r.size(); ++k)
+    {
+        if (r[k + 1] > floor)
+        {
+            order = Foam::log(r[k + 1]/r[k])/Foam::log(r[k]/r[k - 1]);
+        }
+    }
+    return order;
+}
+
+
 } // End namespace
 
 
@@ -545,15 +562,7 @@ int main(int argc, char *argv[])
             "kelvin: Newton with chop: iterations to the round-off floor",
             rn.last() < floor, rn.size() - 1, 15, "<="
         );
-        scalar order = 0;
-        for (label k = 1; k + 1 < rn.size(); ++k)
-        {
-            if (rn[k + 1] > floor)
-            {
-                order =
-                    Foam::log(rn[k + 1]/rn[k])/Foam::log(rn[k]/rn[k - 1]);
-            }
-        }
+        const scalar order = convergenceOrder(rn, floor);
         checkAtLeast
         (
             "kelvin: order of convergence, last step above floor", order,
@@ -1203,14 +1212,7 @@ int main(int argc, char *argv[])
         "Newton with chop: iterations to the round-off floor",
         rn.last() < floor, rn.size() - 1, 15, "<="
     );
-    scalar order = 0;
-    for (label k = 1; k + 1 < rn.size(); ++k)
-    {
-        if (rn[k + 1] > floor)
-        {
-            order = Foam::log(rn[k + 1]/rn[k])/Foam::log(rn[k]/rn[k - 1]);
-        }
-    }
+    const scalar order = convergenceOrder(rn, floor);
     checkAtLeast("order of convergence, last step above floor", order, 1.8, 0);
     scalar dT = 0, dP = 0, dW = 0;
     forAll(T, c)
