@@ -99,7 +99,8 @@ void Foam::liquidFlow::readFixedPressure
         (
             Cf.size() ? min(-(darcy_.g() & Cf)/magG) : GREAT,
             minOp<scalar>()
-        );
+        )
+      + scalar(0);      // (-0 printed as 0)
     if (level_[patchi] > zMin)
     {
         FatalIOErrorInFunction(tDict)
