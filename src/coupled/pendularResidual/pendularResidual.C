@@ -598,8 +598,7 @@ Foam::scalar Foam::pendularResidual::liquidBoundaryFlux
     const scalar Fl =
         liquid->boundaryFlux
         (
-            facei, patchi, i, liquidState(c),
-            liquid->boundaryState(patchi, i, b.p, liquidTemperature(b.T))
+            facei, patchi, i, liquidState(c), b.p, liquidTemperature(b.T)
         );
     enthalpyFlow = Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
     return Fl;

@@ -146,8 +146,7 @@ void Foam::richardsResidual::boundaryFlux
     F[0] =
         liquid_.boundaryFlux
         (
-            facei, patchi, i, state(xOwn[0]),
-            liquid_.boundaryState(patchi, i, pg_, T_)
+            facei, patchi, i, state(xOwn[0]), pg_, T_
         );
 }
 

@@ -378,7 +378,8 @@ Foam::scalar Foam::liquidFlow::boundaryFlux
     const label patchi,
     const label i,
     const liquidDarcyFlux::liquidState& c,
-    const liquidDarcyFlux::liquidState& f
+    const scalar pg,
+    const scalar T
 ) const
 {
     const scalar magSf = mesh_.magSf().boundaryField()[patchi][i];
@@ -389,7 +390,8 @@ Foam::scalar Foam::liquidFlow::boundaryFlux
             return
                 darcy_.massFlux
                 (
-                    c, f, delta_[facei - mesh_.nInternalFaces()], magSf,
+                    c, boundaryState(patchi, i, pg, T),
+                    delta_[facei - mesh_.nInternalFaces()], magSf,
                     mesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
                     0.5
                 );
