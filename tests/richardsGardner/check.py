@@ -138,6 +138,21 @@ def check(scratch):
          max(abs(a['S'] - b['S']) for a, b in zip(ser, par))
          if len(par) == len(ser) else 1, 1e-10)
 
+    # 2c. fixedPressure: the water table at the bottom face is S_f = 1
+    # (p_c = 0 = p_c(1)): the same face state as fixedSaturation S 1, so
+    # the same run to round-off
+    for name, what in (('waterTable_100', 'water table at the bottom face'),
+                       ('pl_100', 'pl constant 1e5 (= p_g)')):
+        tab = read_profile(os.path.join(scratch, name))
+        c.le('%s: max |S - S(fixedSaturation 1)|' % what,
+             max(abs(a['S'] - b['S']) for a, b in zip(ser, tab))
+             if len(tab) == len(ser) else 1, 1e-12)
+    # 0.3 m below, the top closed: hydrostatic S = exp(-a (z + 0.3)) at the
+    # cell centres, exact for two-point FV; Newton's STol 1e-10 on S
+    hyd = read_profile(os.path.join(scratch, 'hydrostatic_100'))
+    c.le('water table 0.3 m below, top closed: max |S - exp(-a (z + 0.3))|',
+         max(abs(r['S'] - math.exp(-A*(r['z'] + 0.3))) for r in hyd), 1e-9)
+
     # 2. Transient mode (backward Euler, arithmetic k_rl)
     errs = []
     for N in (50, 100):

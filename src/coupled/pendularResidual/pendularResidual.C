@@ -570,8 +570,9 @@ void Foam::pendularResidual::boundaryFlux
     }
 
     // The liquid by its own condition (liquidFlow: impermeable where not
-    // given), the face state at the patch's saturation and the face's p_g
-    // and T; outflow carries the cell's enthalpy, inflow the face's
+    // given), the face state at the patch's saturation or liquid pressure
+    // and the face's p_g and T; outflow carries the cell's enthalpy,
+    // inflow the face's
     scalar FlE;
     F[0] += liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
     F[2] += FlE;
@@ -594,10 +595,11 @@ Foam::scalar Foam::pendularResidual::liquidBoundaryFlux
     {
         return 0;
     }
-    cellState f(b);
-    f.alpha = liquid->value(patchi);
     const scalar Fl =
-        liquid->boundaryFlux(facei, patchi, i, liquidState(c), liquidState(f));
+        liquid->boundaryFlux
+        (
+            facei, patchi, i, liquidState(c), b.p, liquidTemperature(b.T)
+        );
     enthalpyFlow = Fl*medium_.liquidEnthalpy(Fl >= 0 ? c.T : b.T);
     return Fl;
 }
@@ -611,12 +613,7 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
     liquidDarcyFlux::liquidState l =
         medium_.liquidFlowPtr()->state
         (
-            s.p, s.alpha,
-            min
-            (
-                max(s.T, medium_.minimumTemperature()),
-                medium_.dryOutTemperature()
-            )
+            s.p, s.alpha, liquidTemperature(s.T)
         );
     // A cell without liquid (alpha_l = 0: above T_d; below it the
     // Kelvin-Laplace state keeps alpha_l > 0) gives none, whatever the
@@ -627,6 +624,20 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
         l.krl = 0;
     }
     return l;
+}
+
+
+Foam::scalar Foam::pendularResidual::liquidTemperature
+(
+    const scalar T
+) const
+{
+    return
+        min
+        (
+            max(T, medium_.minimumTemperature()),
+            medium_.dryOutTemperature()
+        );
 }
 
 

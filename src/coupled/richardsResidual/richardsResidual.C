@@ -146,7 +146,7 @@ void Foam::richardsResidual::boundaryFlux
     F[0] =
         liquid_.boundaryFlux
         (
-            facei, patchi, i, state(xOwn[0]), state(liquid_.value(patchi))
+            facei, patchi, i, state(xOwn[0]), pg_, T_
         );
 }
 

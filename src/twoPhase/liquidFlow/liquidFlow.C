@@ -17,11 +17,101 @@ Foam::liquidFlow::patchTypeNames
 ({
     { patchType::fixedSaturation, "fixedSaturation" },
     { patchType::fixedFlux, "fixedFlux" },
+    { patchType::fixedPressure, "fixedPressure" },
     { patchType::impermeable, "impermeable" },
 });
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::liquidFlow::readFixedPressure
+(
+    const dictionary& pDict,
+    const label patchi
+)
+{
+    const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+    const string where("liquid boundary condition of patch " + pp.name());
+    const bool hasPl = pDict.found("pl", keyType::LITERAL);
+    const bool hasTable = pDict.found("waterTable", keyType::LITERAL);
+    if (hasPl == hasTable)
+    {
+        FatalIOErrorInFunction(pDict)
+            << "Patch '" << pp.name() << "' of type fixedPressure in "
+            << pDict.name() << ": "
+            << (hasPl ? "both 'pl' and 'waterTable' given" : "missing")
+            << ": give one of 'pl <Function1 of time> [Pa]' or"
+            << " 'waterTable { level <z> [m]; pressure <p_0> [Pa]; }'"
+            << exit(FatalIOError);
+    }
+    if (hasPl)
+    {
+        wordList keys({"type"});
+        keys.append(checkedRead::function1Keywords(pDict, "pl"));
+        checkedRead::checkKeywords(pDict, keys, where);
+        pl_.set(patchi, Function1<scalar>::New("pl", pDict));
+        // Its value at the start: a finite pressure
+        checkedRead::check
+        (
+            pDict, "pl", pl_[patchi].value(mesh_.time().value()),
+            validRange{-GREAT, GREAT, false, false}
+        );
+        return;
+    }
+    checkedRead::checkKeywords(pDict, {"type", "waterTable"}, where);
+    if (!pDict.isDict("waterTable"))
+    {
+        FatalIOErrorInFunction(pDict)
+            << "Keyword 'waterTable' of patch '" << pp.name() << "' in "
+            << pDict.name() << " must be a sub-dictionary"
+            << " { level <z> [m]; pressure <p_0> [Pa]; }"
+            << exit(FatalIOError);
+    }
+    const dictionary& tDict = pDict.subDict("waterTable");
+    checkedRead::checkKeywords
+    (
+        tDict, {"level", "pressure"}, where + ", its water table"
+    );
+    level_[patchi] =
+        checkedRead::get
+        (
+            tDict, "level", dimLength, validRange{-GREAT, GREAT, false, false}
+        ).value();
+    pTable_[patchi] =
+        checkedRead::getOrDefault
+        (
+            tDict, "pressure", dimPressure, 101325, checkedRead::positive()
+        ).value();
+    const scalar magG = mag(darcy_.g());
+    if (magG <= 0)
+    {
+        FatalIOErrorInFunction(tDict)
+            << "A water table ('waterTable' of patch '" << pp.name()
+            << "' in " << tDict.name() << ") needs gravity: g = "
+            << darcy_.g() << " (constant/g)" << exit(FatalIOError);
+    }
+    // A ponded face (the water table above it, p_l,f > p_0) is beyond the
+    // saturation form: refused. Every rank reaches this (the same
+    // non-processor patches on every rank)
+    const vectorField& Cf = mesh_.Cf().boundaryField()[patchi];
+    const scalar zMin =
+        returnReduce
+        (
+            Cf.size() ? min(-(darcy_.g() & Cf)/magG) : GREAT,
+            minOp<scalar>()
+        )
+      + scalar(0);      // (-0 printed as 0)
+    if (level_[patchi] > zMin)
+    {
+        FatalIOErrorInFunction(tDict)
+            << "Keyword 'level' = " << level_[patchi] << " m of the water"
+            << " table of patch '" << pp.name() << "' in " << tDict.name()
+            << " is above its lowest face (height " << zMin << " m along"
+            << " -g): valid range (-inf, " << zMin << "] (a ponded face"
+            << " is beyond the saturation form)" << exit(FatalIOError);
+    }
+}
+
 
 void Foam::liquidFlow::readBoundary
 (
@@ -105,6 +195,9 @@ void Foam::liquidFlow::readBoundary
                         validRange{-GREAT, GREAT, false, false}
                     ).value();
                 break;
+            case patchType::fixedPressure:
+                readFixedPressure(pDict, patchi);
+                break;
             case patchType::impermeable:
                 checkedRead::checkKeywords(pDict, {"type"}, where);
                 break;
@@ -138,6 +231,9 @@ Foam::liquidFlow::liquidFlow
     darcy_(dict, g, pc_(), kr_()),
     type_(mesh.boundaryMesh().size(), patchType::impermeable),
     value_(mesh.boundaryMesh().size(), Zero),
+    pl_(mesh.boundaryMesh().size()),
+    level_(mesh.boundaryMesh().size(), Zero),
+    pTable_(mesh.boundaryMesh().size(), Zero),
     delta_(mesh.nBoundaryFaces(), Zero)
 {
     forAll(mesh.boundary(), patchi)
@@ -235,23 +331,67 @@ Foam::scalar Foam::liquidFlow::faceFlux
 }
 
 
+Foam::scalar Foam::liquidFlow::liquidPressure
+(
+    const label patchi,
+    const label i
+) const
+{
+    if (pl_.set(patchi))
+    {
+        return pl_[patchi].value(mesh_.time().value());
+    }
+    // p_0 - rho_l |g| (z_f - z_wt), z = -g.x/|g|
+    const vector& g = darcy_.g();
+    const scalar rhol = darcy_.rhoLiquid();
+    return
+        pTable_[patchi]
+      + rhol*(g & mesh_.Cf().boundaryField()[patchi][i])
+      + rhol*mag(g)*level_[patchi];
+}
+
+
+Foam::liquidDarcyFlux::liquidState Foam::liquidFlow::boundaryState
+(
+    const label patchi,
+    const label i,
+    const scalar pg,
+    const scalar T
+) const
+{
+    if (type_[patchi] != patchType::fixedPressure)
+    {
+        return state(pg, value_[patchi], T);
+    }
+    const scalar pc = pg - liquidPressure(patchi, i);
+    return
+        liquidDarcyFlux::liquidState
+        {
+            pg, pc, kr_->krl(pc_->saturation(pc, T)), K_
+        };
+}
+
+
 Foam::scalar Foam::liquidFlow::boundaryFlux
 (
     const label facei,
     const label patchi,
     const label i,
     const liquidDarcyFlux::liquidState& c,
-    const liquidDarcyFlux::liquidState& f
+    const scalar pg,
+    const scalar T
 ) const
 {
     const scalar magSf = mesh_.magSf().boundaryField()[patchi][i];
     switch (type_[patchi])
     {
         case patchType::fixedSaturation:
+        case patchType::fixedPressure:
             return
                 darcy_.massFlux
                 (
-                    c, f, delta_[facei - mesh_.nInternalFaces()], magSf,
+                    c, boundaryState(patchi, i, pg, T),
+                    delta_[facei - mesh_.nInternalFaces()], magSf,
                     mesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
                     0.5
                 );

@@ -27,7 +27,11 @@ Description
     - regularised dry end (pcLinearBelowSe S_r): the law above S_r, its
       tangent below (from the law's own p_c and dp_c/dS), constant below
       S_wr, C1 at S_r; pendular p_c(0) = 3/2 a S_r^(-1/2); dp_c/dT of the
-      tangent against central differences; S_r outside (0, 0.5] refused.
+      tangent against central differences; S_r outside (0, 0.5] refused;
+    - the inverse saturation(p_c, T) (liquidFlow's fixedPressure faces):
+      S back from p_c(S, T) within 1e-12 for every law (with residual
+      saturations, regularised, at two temperatures), 1 at and below
+      p_c(1) (p_c <= 0 too), S_wr above a finite law's p_c(S_wr).
 
     Usage: testCapillaryPressureLaws [-fatal CASE]
 
@@ -323,6 +327,53 @@ void testRegularised()
 }
 
 
+void testInverse()
+{
+    section("inverse: saturation(p_c, T) gives S back");
+    const std::string laws[] =
+    {
+        "capillaryPressureModel vanGenuchten; Swr 0.1; Sgr 0.05;"
+        "vanGenuchtenCoeffs { alpha 1e-4; n 2; }",
+        "capillaryPressureModel vanGenuchten; Swr 0.1; pcLinearBelowSe 0.01;"
+        "vanGenuchtenCoeffs { alpha 1e-4; n 2; }",
+        "capillaryPressureModel brooksCorey; Swr 0.2;"
+        "brooksCoreyCoeffs { pd 2000; lambda 1.5; }",
+        "capillaryPressureModel exponential; exponentialCoeffs { p0 4905; }",
+        "capillaryPressureModel leverettJ; Swr 0.15; pcLinearBelowSe 0.05;"
+        "leverettJCoeffs { permeability 1e-12; porosity 0.4; }",
+        "capillaryPressureModel pendular; pcLinearBelowSe 1e-3;"
+        "pendularCoeffs { asymptoticToroidalCoeffs { R0 1e-4; } }"
+    };
+    for (const std::string& text : laws)
+    {
+        auto m = model(text);
+        const scalar Swr = m->saturation().Swr();
+        const scalar Smax = 1 - m->saturation().Sgr();
+        for (const scalar T : {293.15, 373.15})
+        {
+            for (const scalar Se : {1e-4, 0.02, 0.3, 0.7, 0.95})
+            {
+                const scalar S = Swr + Se*(Smax - Swr);
+                checkAbs
+                (
+                    fmt("%s: S(p_c(S = %g), T = %g)", m->type().c_str(), S, T),
+                    m->saturation(m->pc(S, T), T), S, 1e-12
+                );
+            }
+            checkAbs(fmt("%s: S(p_c(1)) = 1", m->type().c_str()),
+                m->saturation(m->pc(1, T), T), 1, 0);
+            checkAbs(fmt("%s: S(-100 Pa) = 1", m->type().c_str()),
+                m->saturation(-100, T), 1, 0);
+            if (m->finiteAtResidual())
+            {
+                checkAbs(fmt("%s: S(2 p_c(S_wr)) = S_wr", m->type().c_str()),
+                    m->saturation(2*m->pc(Swr, T), T), Swr, 0);
+            }
+        }
+    }
+}
+
+
 void testBadInput()
 {
     section("bad input");
@@ -446,6 +497,7 @@ int main(int argc, char* argv[])
     testLeverettJ();
     testPendular();
     testRegularised();
+    testInverse();
     testBadInput();
 
     Info<< nl << nChecks << " checks, " << nFailed << " failed" << endl;

@@ -109,4 +109,38 @@ Foam::scalar Foam::capillaryPressureModel::dpcdT
     return dpcdTEff(Se, T);
 }
 
+
+
+Foam::scalar Foam::capillaryPressureModel::saturation
+(
+    const scalar pcValue,
+    const scalar T
+) const
+{
+    const scalar Swr = saturation_.Swr();
+    scalar hi = 1 - saturation_.Sgr();
+    if (pcValue <= pc(hi, T))
+    {
+        return 1;
+    }
+    scalar lo = Swr;
+    if (finiteAtResidual() && pcValue >= pc(lo, T))
+    {
+        return lo;
+    }
+    // p_c(lo) > pcValue > p_c(hi); lo itself never evaluated (unbounded
+    // laws end there)
+    for (label iter = 0; iter < 200 && hi - lo > 4*SMALL*hi; ++iter)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        if (mid <= lo || mid >= hi)
+        {
+            break;
+        }
+        (pc(mid, T) > pcValue ? lo : hi) = mid;
+    }
+    return 0.5*(lo + hi);
+}
+
+
 // ************************************************************************* //

@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""pendularWaterTable: pendularFoam with a fixedPressure liquid patch
+(liquidFlow's water table, p_l,f = p_0 - rho_l |g| (z_f - z_wt)) under an
+isothermal 1-m column of an exponential soil (S_e = exp(-p_c/p_c0), p_c0 =
+4905 Pa: a = rho_l g/p_c0 = 2 1/m; k_rl = S; K = 1e-12 m2; S_wr = S_gr = 0,
+so S = S_e), the gas closed (its pressure p_g read from the results).
+
+(a) hydrostatic: the top closed to the liquid, the water table 1.5 m below
+    the bottom face; from alpha_l = 0.06 the column drains to equilibrium,
+    where every face's potential p_l - rho_l g.x is that of the water
+    table. Two-point finite volumes are exact for it (the discrete fluxes
+    all vanish at the exact cell-centre pressures, the boundary face's
+    included), so the cell values equal the closed form
+        S(z_c) = exp(-(p_g,c - p_l(z_c))/p_c0),
+        p_l(z) = p_0 - rho_l g (z - z_wt)
+    to Newton's tolerance (pTol 1e-6 Pa: 1e-10 m of head; p written to
+    10 digits, 1e-5 Pa: 1e-9 m; 1e-8 m asked; the slowest
+    mode, D = K p_c0/(mu phi) = 1.2e-5 m2/s, decays as exp(-pi^2 D t/(4
+    L^2)) at least; the head at 1e6, 1.5e6 and 2e6 s the same to 1e-16 m,
+    measured with air's vapour diffusivity). The vapour diffuses 1e6 times slower than in air: the
+    menisci's Kelvin law (the vapour) is not the liquid's exponential p_c,
+    so with air's 2e-5 m2/s vapour diffuses along the column at the
+    liquid's equilibrium, held by a liquid counter-flow (1.3e-7 m of head
+    at the top, measured). The water that left through the bottom (liquid
+    only: the gas is closed) = (rho_l - rho_v) phi A dz sum(S0 - S(z_c)):
+    the liquid lost less the vapour filling the pores it left (rho_v =
+    p_wsat(20 C) M_w/(R T), 1.7e-5 of rho_l; its Kelvin factor and the
+    vapour's redistribution below 1e-7 of the outflow).
+Heights z are from the bottom face (at y = 1 m).
+(b) Gardner's (1958) steady evaporation (E = 9.81e-8 m/s, the top's flux
+    9.81e-5 kg/m2/s) with the water table ln(10)/2 m below the bottom face
+    (S_f = 0.1 at p_g = p_0): the closed form from the face's saturation
+    S_b = exp(-(p_g - p_l,f)/p_c0) (hearthcheck.gardner_head), on 50, 100,
+    200 cells: first order (k_rl upwind).
+(c) the balances pendularFoam reports within 1e-10;
+(d) 2 ranks = serial, the hydrostatic and the 100-cell Gardner columns.
+
+check.py gardnerInitial N PATH  the exact Gardner S (S_b = 0.1) at N cells
+check.py check SCRATCH          the comparisons
+"""
+import math
+import os
+import re
+import sys
+
+import hearthcheck as hc
+
+PC0 = 4905.0
+A = 2.0                     # 1/m: rho_l g/p_c0
+RHO, G = 1000.0, 9.81
+PHI = 0.4
+AREA = 1e-4                 # m2: the column's cross-section
+H = 1.0
+P0 = 101325.0
+S0 = 0.06                   # (a) initial alpha_l
+Y0 = 1.0                    # the bottom face's height (y) [m]
+ZWT_A = -1.5                # (a) the water table, from the bottom face
+ZWT_B = -math.log(10)/A     # (b): S_f = 0.1 at p_g = p_0
+KS = 1e-12*RHO*G/1e-3       # m/s
+E = 9.81e-5/RHO             # m/s
+
+
+def read_field(case, name):
+    times = [d for d in os.listdir(case)
+             if re.match(r'^[0-9.e+]+$', d) and float(d) > 0]
+    last = max(times, key=float)
+    with open(os.path.join(case, last, name)) as f:
+        text = f.read()
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*'
+                  r'\(([^)]*)\)', text)
+    if m:
+        return [float(v) for v in m.group(2).split()]
+    m = re.search(r'internalField\s+uniform\s+(\S+);', text)
+    return None if not m else float(m.group(1))
+
+
+def cells(case, n):
+    alpha = read_field(case, 'alphaL')
+    p = read_field(case, 'p')
+    if not isinstance(p, list):
+        p = [p]*n
+    return alpha, p
+
+
+def hydrostatic_s(pg, z, zwt):
+    return math.exp(-(pg - (P0 - RHO*G*(z - zwt)))/PC0)
+
+
+def last_outflow(log, patch='bottom'):
+    """The water that left through patch since the start (the last
+    water balance of the log; 0 if it names no flow through patch)."""
+    out, water = None, False
+    with open(log) as f:
+        for line in f:
+            if line.startswith('Water balance'):
+                water, out = True, 0.0
+            elif re.match(r'^\S', line):
+                water = False
+            m = re.search(r'out through %s = (\S+)' % patch, line)
+            if m and water:
+                out = float(m.group(1))
+    return out
+
+
+def gardner_initial(n, path):
+    s = [math.exp(A*hc.gardner_head((i + 0.5)*H/n, A, E/KS, 0.1))
+         for i in range(n)]
+    with open(path) as f:
+        text = f.read()
+    field = 'nonuniform List<scalar> %d\n(\n%s\n)' % (
+        n, '\n'.join('%.12g' % v for v in s))
+    text = re.sub(r'internalField\s+uniform\s+\S+;',
+                  'internalField   ' + field + ';', text)
+    with open(path, 'w') as f:
+        f.write(text)
+
+
+def gardner_error(case, n):
+    """max |h - h_Gardner| [m] at the cell centres, Gardner from the
+    face's S_b at the bottom cell's p_g (the face's: the gas closed)."""
+    alpha, p = cells(case, n)
+    pl_face = P0 - RHO*G*(0 - ZWT_B)
+    sb = math.exp(-(p[0] - pl_face)/PC0)
+    return max(abs(math.log(alpha[i])/A
+                   - hc.gardner_head((i + 0.5)*H/n, A, E/KS, sb))
+               for i in range(n)), sb
+
+
+def at_least(c, what, value, bound):
+    return c.true(what, value >= bound, '%.4g >= %.4g' % (value, bound))
+
+
+def check(scratch):
+    c = hc.Check('pendularWaterTable')
+    logs = []
+
+    # (a) hydrostatic equilibrium
+    n = 50
+    case = os.path.join(scratch, 'hydrostatic')
+    alpha, p = cells(case, n)
+    dz = H/n
+    exact = [hydrostatic_s(p[i], (i + 0.5)*dz, ZWT_A) for i in range(n)]
+    print('hydrostatic: alpha_l %.6g (bottom) to %.6g (top), p_g %.3f Pa'
+          % (alpha[0], alpha[-1], p[0]))
+    # the head's error ln(S/S_exact)/a [m]: the written p's 1e-5 Pa is
+    # 1e-9 m of head, Newton's pTol 1e-6 Pa 1e-10 m (3.1e-10 m measured;
+    # WTol 1e-11 of the largest water content 4e-11 m at the top cell)
+    err = max(abs(math.log(a/e))/A for a, e in zip(alpha, exact))
+    c.le('hydrostatic: max |h - h_exact| at the cell centres [m]', err, 1e-8)
+    c.true('hydrostatic: every cell below alphaLMax 0.1',
+           max(alpha) < 0.1, 'max alpha_l %.4g' % max(alpha))
+    rhov = 2339.2*0.018/(8.31*293.15)   # IAPWS p_wsat(20 C), the case's M_w, R
+    drained = (RHO - rhov)*PHI*AREA*dz*sum(S0 - e for e in exact)
+    out = last_outflow(os.path.join(case, 'log.pendularFoam'))
+    print('hydrostatic: out through bottom %.10g kg, (rho_l - rho_v) phi A'
+          ' sum(S0 - S) dz %.10g kg' % (out, drained))
+    c.le("hydrostatic: |out - (rho_l - rho_v) phi A sum(S0 - S) dz| / that",
+         abs(out - drained)/drained, 1e-6)
+    logs.append(case)
+
+    # (a) again, the bottom open to the gas at a fixed T
+    case = os.path.join(scratch, 'hydrostatic_open')
+    alpha, p = cells(case, n)
+    exact = [hydrostatic_s(p[i], (i + 0.5)*dz, ZWT_A) for i in range(n)]
+    print('hydrostatic, gas open: alpha_l %.6g to %.6g, p_g %.3f Pa'
+          % (alpha[0], alpha[-1], p[0]))
+    c.le('hydrostatic, gas open: max |h - h_exact| [m]',
+         max(abs(math.log(a/e))/A for a, e in zip(alpha, exact)), 1e-8)
+    logs.append(case)
+
+    # (b) Gardner from the water table
+    err = {}
+    for n in (50, 100, 200):
+        case = os.path.join(scratch, 'gardner_%d' % n)
+        err[n], sb = gardner_error(case, n)
+        print('gardner N = %d: S_b = %.8f, max |h - h_Gardner| = %.6g m'
+              % (n, sb, err[n]))
+        logs.append(case)
+    for n in (50, 100):
+        order = math.log(err[n]/err[2*n])/math.log(2)
+        at_least(c, 'gardner: observed order %d -> %d cells' % (n, 2*n),
+                 order, 0.85)
+    c.le('gardner: N = 200 error / first-order extrapolation of N = 100',
+         err[200]/(err[100]/2), 1.2)
+    # a plausible wrong answer: Gardner at 1.1 E is farther than twice the
+    # 100-cell error (tests/pendularGardner's)
+    n = 100
+    wrong = max(abs(hc.gardner_head((i + 0.5)*H/n, A, 1.1*E/KS, 0.1)
+                    - hc.gardner_head((i + 0.5)*H/n, A, E/KS, 0.1))
+                for i in range(n))
+    at_least(c, 'gardner: 1.1 E, max |dh| / N = 100 error',
+             wrong/err[100], 2)
+
+    # (c) balances
+    for case in logs + [os.path.join(scratch, 'hydrostatic_parallel'),
+                        os.path.join(scratch, 'gardner_100_parallel')]:
+        c.le('%s: largest relative imbalance (water, air, energy)'
+             % os.path.basename(case),
+             hc.worst_relative_imbalance(
+                 os.path.join(case, 'log.pendularFoam')), 1e-10)
+
+    # (d) 2 ranks = serial
+    for name in ('hydrostatic', 'gardner_100'):
+        ser = read_field(os.path.join(scratch, name), 'alphaL')
+        par = read_field(os.path.join(scratch, name + '_parallel'), 'alphaL')
+        c.le('%s: 2 ranks - serial, max |alpha_l| difference / max alpha_l'
+             % name, max(abs(a - b) for a, b in zip(par, ser))/max(ser), 1e-9)
+    c.done()
+
+
+if __name__ == '__main__':
+    if sys.argv[1] == 'gardnerInitial':
+        gardner_initial(int(sys.argv[2]), sys.argv[3])
+    else:
+        check(sys.argv[2])
