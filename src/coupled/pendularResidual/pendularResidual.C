@@ -24,7 +24,8 @@ Foam::pendularResidual::pendularResidual
     const scalarField& x0,
     const scalarField& alphaGuess,
     const scalar dt,
-    const differenceScheme scheme
+    const differenceScheme scheme,
+    const labelList& phases0
 )
 :
     coupledResidual
@@ -57,7 +58,9 @@ Foam::pendularResidual::pendularResidual
     satCache_(fvMesh_.nCells()),
     satNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
-    nbrAlphaGuess_()
+    nbrAlphaGuess_(),
+    phase_(fvMesh_.nCells(), label(bothPhases)),
+    nbrPhase_()
 {
     // No state cached yet: keys no unknown can take
     for (auto& entries : cache_)
@@ -65,6 +68,7 @@ Foam::pendularResidual::pendularResidual
         for (cacheEntry& e : entries)
         {
             e.x[0] = e.x[1] = e.x[2] = -GREAT;
+            e.phase = -1;
         }
     }
     for (auto& sats : satCache_)
@@ -104,6 +108,7 @@ Foam::pendularResidual::pendularResidual
         fvMesh_, medium_.porosity().primitiveField(), nbrPorosity_
     );
     syncTools::swapBoundaryCellList(fvMesh_, alphaGuess_, nbrAlphaGuess_);
+    setPhases(phases0.empty() ? phase_ : phases0);
 
     forAll(W0_, celli)
     {
@@ -161,6 +166,38 @@ void Foam::pendularResidual::bdf2
     }
     eulerCells_.transfer(cells);
     eulerHistory_.transfer(history);
+}
+
+
+void Foam::pendularResidual::setPhases(const labelList& phases)
+{
+    if (phases.size() != fvMesh_.nCells())
+    {
+        FatalErrorInFunction
+            << "pendularResidual::setPhases: " << phases.size()
+            << " phase states for " << fvMesh_.nCells() << " cells"
+            << exit(FatalError);
+    }
+    forAll(phases, celli)
+    {
+        if
+        (
+            phases[celli] != bothPhases
+         && !(phases[celli] == liquidOnly && medium_.saturatedZone())
+        )
+        {
+            FatalErrorInFunction
+                << "pendularResidual::setPhases: cell " << celli
+                << " phase state " << phases[celli] << "; valid: "
+                << label(bothPhases) << " (bothPhases), "
+                << label(liquidOnly) << " (liquidOnly, with liquidFlow's"
+                << " saturatedZone only)" << exit(FatalError);
+        }
+    }
+    // (a copy first: phases may be phase_ itself)
+    labelList newPhases(phases);
+    phase_.transfer(newPhases);
+    syncTools::swapBoundaryCellList(fvMesh_, phase_, nbrPhase_);
 }
 
 
@@ -255,19 +292,29 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
 ) const
 {
     FixedList<cacheEntry, nCache>& entries = cache_[celli];
+    const label phase = phase_[celli];
     for (const cacheEntry& e : entries)
     {
-        if (e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2])
+        if
+        (
+            e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2]
+         && e.phase == phase
+        )
         {
             return e.s;
         }
     }
     // A state at the same T and W (e.g. the Jacobian's step of p_g) has
     // the same liquid fraction and vapour: only the gas closure is new
+    // (two-phase cells: a liquidOnly state is cheap)
     const cellState* same = nullptr;
     for (const cacheEntry& e : entries)
     {
-        if (e.x[0] == x[0] && e.x[2] == x[2])
+        if
+        (
+            phase == bothPhases && e.phase == bothPhases
+         && e.x[0] == x[0] && e.x[2] == x[2]
+        )
         {
             same = &e.s;
             break;
@@ -286,8 +333,9 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
       : state
         (
             medium_.porosity()[celli], alphaGuess_[celli], x,
-            saturation(celli, x[0])
+            saturation(celli, x[0]), phase
         );
+    e.phase = phase;
     e.x[0] = x[0];
     e.x[1] = x[1];
     e.x[2] = x[2];
@@ -323,9 +371,19 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     const scalar phi,
     const scalar alphaGuess,
     const scalar* x,
-    const pendularMedium::saturationState& sat
+    const pendularMedium::saturationState& sat,
+    const label phase
 ) const
 {
+    if (phase == liquidOnly)
+    {
+        // No gas: (T, p_l - p_ref, X)
+        return
+            pendularState::liquidOnlyClosure
+            (
+                medium_, phi, x[0], x[1] + pRef_, x[2]
+            );
+    }
     // Model A: the liquid fraction holding W at T and the vapour in
     // Kelvin-Laplace equilibrium with it, then pendularState's closure
     // (the inversion uses p_wsat and sigma at T, not their slopes)
@@ -436,7 +494,10 @@ void Foam::pendularResidual::scales
         const scalar pa = s.pa;
         water[celli] = a0W_[celli]*V[celli]/dt_;
         gas[celli] =
-            a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
+            s.liquidOnly
+            // dA/dp_a of the dissolved air, phi M_a H^cp
+          ? a0_*V[celli]*phi*medium_.Ma()*medium_.henry(s.T)/dt_
+          : a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
            /(medium_.R()*s.T*dt_);
         energy[celli] =
             a0_*V[celli]
@@ -493,7 +554,7 @@ void Foam::pendularResidual::faceFlux
         state
         (
             nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei,
-            medium_.saturationValues(xNei[0])
+            medium_.saturationValues(xNei[0]), nbrPhase_[bFacei]
         );
     flux
     (
@@ -573,8 +634,17 @@ void Foam::pendularResidual::boundaryFlux
     // given), the face state at the patch's saturation and the face's p_g
     // and T; outflow carries the cell's enthalpy, inflow the face's
     scalar FlE;
-    F[0] += liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    const scalar Fl = liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    F[0] += Fl;
     F[2] += FlE;
+    if (medium_.saturatedZone() && Fl != 0)
+    {
+        // The dissolved air: the cell's out, Henry's at the face's p_a in
+        const scalar Fa =
+            Fl*(Fl >= 0 ? c.X : medium_.dissolvedAir(b.pa, b.T));
+        F[1] += Fa;
+        F[2] += Fa*(Fl >= 0 ? c.hA : b.hA);
+    }
 }
 
 
@@ -692,6 +762,13 @@ void Foam::pendularResidual::addLiquidFlux
         );
     F[0] += Fl;
     F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);
+    if (medium_.saturatedZone())
+    {
+        // The dissolved air, upwind, with the air's enthalpy
+        const cellState& up = Fl >= 0 ? o : n;
+        F[1] += Fl*up.X;
+        F[2] += Fl*up.X*up.hA;
+    }
 }
 
 

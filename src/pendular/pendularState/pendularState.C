@@ -297,6 +297,54 @@ Foam::pendularState::cellState Foam::pendularState::closure
     s.hA = medium.airEnthalpy(T);
     s.E = medium.energy(T, W, alpha, rhoW, s.pa, phi);
     s.A = phi*(1 - alpha)*s.rhoA;
+    s.X = 0;
+    s.liquidOnly = false;
+    if (medium.saturatedZone())
+    {
+        // Henry's dissolved air in the liquid, with its enthalpy
+        s.X = medium.dissolvedAir(s.pa, T);
+        const scalar dissolved = phi*alpha*medium.rhoL()*s.X;
+        s.A += dissolved;
+        s.E += dissolved*medium.airEnthalpy(T);
+    }
+    return s;
+}
+
+
+Foam::pendularState::cellState Foam::pendularState::liquidOnlyClosure
+(
+    const pendularMedium& medium,
+    const scalar phi,
+    const scalar T,
+    const scalar pl,
+    const scalar X
+)
+{
+    const scalar R = medium.R();
+    const scalar pc1 = medium.pcSaturated(T);
+    cellState s;
+    s.T = T;
+    s.p = pl + pc1;
+    s.alpha = 1;
+    s.pw = medium.saturatedVapourPressure(T);
+    s.pa = medium.airPressure(X, T);
+    // The bubble point p_b = p_w(T, 1) + p_a(X, T) - p_c(1, T)
+    s.W =
+        phi*medium.rhoL()
+       *(1 + medium.storage()*(pl - (s.pw + s.pa - pc1)));
+    s.rhoW = medium.Mw()*s.pw/(R*T);
+    s.rhoA = medium.Ma()*s.pa/(R*T);
+    s.rhoG = s.rhoW + s.rhoA;
+    s.omega = s.rhoW/s.rhoG;
+    s.Kg = 0;
+    s.Dv = 0;
+    s.kappa = medium.kappa(1, phi);
+    s.hW = medium.vapourEnthalpy(T);
+    s.hA = medium.airEnthalpy(T);
+    s.X = X;
+    s.A = s.W*X;
+    s.E = medium.energy(T, s.W, 1, s.rhoW, s.pa, phi) + s.A*s.hA;
+    s.liquidOnly = true;
     return s;
 }
 
