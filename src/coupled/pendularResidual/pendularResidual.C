@@ -201,6 +201,97 @@ void Foam::pendularResidual::setPhases(const labelList& phases)
 }
 
 
+bool Foam::pendularResidual::phaseConsistent
+(
+    const label celli,
+    const scalar* x
+) const
+{
+    const scalar phi = medium_.porosity()[celli];
+    const scalar T = x[0];
+    const scalar rhoL = medium_.rhoL();
+    const scalar pw1 = medium_.saturatedVapourPressure(T);
+    if (phase_[celli] == bothPhases)
+    {
+        const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
+        return (x[2]/phi - rhoW1)/(rhoL - rhoW1) < 1;
+    }
+    const scalar pn = x[1] + pRef_ + medium_.pcSaturated(T);
+    return pn > 0 && pw1 + medium_.airPressure(x[2], T) <= pn;
+}
+
+
+Foam::label Foam::pendularResidual::switchPhases
+(
+    scalarField& x,
+    const boolList& switchedBefore,
+    boolList& switched,
+    const scalar gasSeed,
+    const bool hysteresis
+)
+{
+    const label n = fvMesh_.nCells();
+    switched.setSize(n);
+    switched = false;
+    labelList phases(phase_);
+    label nSwitched = 0;
+    const scalar rhoL = medium_.rhoL();
+    for (label c = 0; c < n && medium_.saturatedZone(); ++c)
+    {
+        scalar* xc = &x[3*c];
+        const scalar phi = medium_.porosity()[c];
+        const scalar T = xc[0];
+        const bool wide = hysteresis && switchedBefore[c];
+        const scalar pw1 = medium_.saturatedVapourPressure(T);
+        const scalar pc1 = medium_.pcSaturated(T);
+        if (phase_[c] == bothPhases)
+        {
+            const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
+            const scalar S = (xc[2]/phi - rhoW1)/(rhoL - rhoW1);
+            if (S >= 1 + (wide ? 0.01 : 0))
+            {
+                const scalar pg = xc[1] + pRef_;
+                xc[1] = pg - pc1 - pRef_;
+                xc[2] = medium_.dissolvedAir(max(pg - pw1, scalar(0)), T);
+                phases[c] = liquidOnly;
+                switched[c] = true;
+                ++nSwitched;
+            }
+        }
+        else
+        {
+            const scalar pn = xc[1] + pRef_ + pc1;
+            if
+            (
+                pn <= 0
+             || pw1 + medium_.airPressure(xc[2], T)
+              > (1 + (wide ? 0.02 : 0))*pn
+            )
+            {
+                const scalar alpha = 1 - gasSeed;
+                xc[2] = medium_.waterContent(alpha, T, phi);
+                xc[1] =
+                    xc[1]
+                  + medium_.liquidFlowPtr()->capillaryPressure().pc
+                    (
+                        alpha,
+                        min
+                        (
+                            max(T, medium_.minimumTemperature()),
+                            medium_.dryOutTemperature()
+                        )
+                    );
+                phases[c] = bothPhases;
+                switched[c] = true;
+                ++nSwitched;
+            }
+        }
+    }
+    setPhases(phases);
+    return nSwitched;
+}
+
+
 Foam::scalar Foam::pendularResidual::waterEulerCorrection
 (
     const scalarField& x
@@ -499,6 +590,14 @@ void Foam::pendularResidual::scales
           ? a0_*V[celli]*phi*medium_.Ma()*medium_.henry(s.T)/dt_
           : a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
            /(medium_.R()*s.T*dt_);
+        if (medium_.saturatedZone() && !s.liquidOnly)
+        {
+            // and the dissolved air's, phi alpha M_a H^cp: the capacity
+            // stays finite as the gas vanishes
+            gas[celli] +=
+                a0_*V[celli]*phi*s.alpha*medium_.Ma()*medium_.henry(s.T)
+               /dt_;
+        }
         energy[celli] =
             a0_*V[celli]
            *medium_.energyCapacity

@@ -23,7 +23,18 @@ Description
        residual, every column (1e-6), with liquidOnly cells (even index)
        beside two-phase ones (odd): liquidOnly, two-phase and mixed faces
        (x: mixed; y, z: same state), and the liquid moving across the
-       mixed faces (checked: at least 1e-3 of the largest flux).
+       mixed faces (checked: at least 1e-3 of the largest flux);
+    5. (-switching, on a copy of the case with millingtonQuirk's vapour
+       diffusion, which vanishes with the gas, and a liquid inflow of
+       1e-8 kg/m2/s) the switching (pendularNewton, issue 14 slice 2): a
+       saturated soil
+       (every cell liquidOnly, its air 0.1 % below saturation, p_l = 1 atm)
+       heated from the top at 420 K for 2 s: Newton converges with the
+       gas appearing in the top cells (at least one switch); at the
+       solution every cell satisfies its state's criterion; the same
+       solution (phases equal, T within 10 TTol, p within 10 pTol, W
+       within 10 WTol, X within 1e-6 X) from the seed S_g = 1e-6 and with
+       the hysteresis off.
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -31,12 +42,19 @@ Description
 #include "blockSystem.H"
 #include "pendularResidual.H"
 #include "liquidFlow.H"
+#include "pendularNewton.H"
 #include "unitChecks.H"
 
 using namespace Foam;
 
 int main(int argc, char *argv[])
 {
+    argList::addBoolOption
+    (
+        "switching",
+        "check 5 alone (Newton with phase switching; the case's vapour"
+        " diffusion vanishing at alpha_l = 1: millingtonQuirk)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -63,6 +81,128 @@ int main(int argc, char *argv[])
     );
     const scalar rhoL = medium.rhoL();
     const scalar cs = medium.storage();
+
+    // 5. Switching in Newton (-switching: this check alone)
+    if (args.found("switching"))
+    {
+        const scalar pRef = 1e5;
+        const label n = mesh.nCells();
+        const scalarField alphaGuess(n, 0.5);
+        section("5. Phase switching: gas appears in a heated saturated soil");
+        {
+            const scalar dtS = 2;
+            labelList all(n, label(pendularResidual::liquidOnly));
+            scalarField xs(3*n);
+            forAll(all, c)
+            {
+                const scalar Tc = T[c];
+                xs[3*c] = Tc;
+                xs[3*c + 1] = 101325 - pRef;
+                xs[3*c + 2] =
+                    0.999*medium.dissolvedAir
+                    (
+                        101325 + medium.pcSaturated(Tc)
+                      - medium.saturatedVapourPressure(Tc), Tc
+                    );
+            }
+            const scalar TTol = 1e-6, pTol = 1e-3, WTol = 1e-8;
+            auto run = [&](const scalar seed, const bool hyst, scalarField& x1)
+            {
+                pendularResidual r
+                (
+                    medium, T, p, pw, pRef, xs, alphaGuess, dtS,
+                    coupledResidual::differenceScheme::central, all
+                );
+                pendularNewton newton
+                (
+                    mesh, mesh.solutionDict().subDict("coupled"), TTol, pTol,
+                    WTol, 0.1, 50, true
+                );
+                newton.setSwitching(seed, hyst);
+                x1 = xs;
+                const pendularNewton::result out = newton.solve(r, x1, pRef);
+                if (!out.valid || !out.converged)
+                {
+                    forAll(all, c)
+                    {
+                        Info<< "  cell " << c << " phase " << r.phases()[c]
+                            << " x " << x1[3*c] << " " << x1[3*c + 1] << " "
+                            << x1[3*c + 2] << " consistent "
+                            << r.phaseConsistent(c, &x1[3*c]) << endl;
+                    }
+                }
+                label nConsistent = 0, nGas = 0;
+                forAll(all, c)
+                {
+                    nConsistent += r.phaseConsistent(c, &x1[3*c]);
+                    nGas += r.phases()[c] == pendularResidual::bothPhases;
+                }
+                Info<< "seed " << seed << ", hysteresis " << hyst << ": "
+                    << (out.converged ? "converged" : "NOT converged")
+                    << " in " << out.iterations << " iterations "
+                    << out.failure.c_str() << "; " << nGas
+                    << " cells with gas" << endl;
+                checkTrue
+                (
+                    fmt("seed %g, hysteresis %d: converged", seed, int(hyst)),
+                    out.converged, out.iterations, 50, "iterations"
+                );
+                checkTrue
+                (
+                    fmt("seed %g: every cell consistent with its state", seed),
+                    nConsistent == n, nConsistent, n, "cells"
+                );
+                return labelList(r.phases());
+            };
+            scalarField xa, xb, xc;
+            const labelList pa = run(1e-4, true, xa);
+            label nGas = 0;
+            forAll(pa, c)
+            {
+                nGas += pa[c] == pendularResidual::bothPhases;
+            }
+            checkTrue
+            (
+                "the gas appears (cells switched)", nGas > 0, nGas, 1, ">="
+            );
+            const labelList pb = run(1e-6, true, xb);
+            const labelList pc = run(1e-4, false, xc);
+            auto compare =
+            [&](const scalarField& y, const labelList& py, const char* what)
+            {
+                scalar dT = 0, dp = 0, dW = 0, dX = 0;
+                forAll(pa, c)
+                {
+                    dT = max(dT, mag(y[3*c] - xa[3*c]));
+                    dp = max(dp, mag(y[3*c + 1] - xa[3*c + 1]));
+                    if (pa[c] == pendularResidual::liquidOnly)
+                    {
+                        dX = max(dX, mag(y[3*c + 2] - xa[3*c + 2])/xa[3*c + 2]);
+                    }
+                    else
+                    {
+                        dW = max(dW, mag(y[3*c + 2] - xa[3*c + 2]));
+                    }
+                }
+                checkTrue
+                (
+                    fmt("%s: the same phase states", what), py == pa, 1, 1,
+                    "bool"
+                );
+                checkAbs(fmt("%s: max |dT| [K]", what), dT, 0, 10*TTol);
+                checkAbs(fmt("%s: max |dp| [Pa]", what), dp, 0, 10*pTol);
+                checkAbs(fmt("%s: max |dW| [kg/m3]", what), dW, 0, 10*WTol);
+                checkAbs(fmt("%s: max |dX|/X", what), dX, 0, 1e-6);
+            };
+            compare(xb, pb, "seed S_g 1e-6");
+            compare(xc, pc, "no hysteresis");
+        }
+
+        Info<< nl << nChecks - nFailed << " of " << nChecks
+            << " checks passed" << endl;
+        return nFailed ? 1 : 0;
+    }
+
 
     // 1. Henry's law: the defaults (Sander 2015: air as 0.79 N2 + 0.21 O2)
     section("1. Henry's law");
