@@ -231,6 +231,19 @@ int main(int argc, char *argv[])
                             << r.phaseConsistent(c, &x1[3*c]) << endl;
                     }
                 }
+                // The gas fraction of the two-phase cells (1 - alpha_l)
+                scalar gasMin = GREAT, gasMax = 0;
+                forAll(all, c)
+                {
+                    if (r.phases()[c] == pendularResidual::bothPhases)
+                    {
+                        const scalar g = 1 - r.state(c, &x1[3*c]).alpha;
+                        gasMin = min(gasMin, g);
+                        gasMax = max(gasMax, g);
+                    }
+                }
+                Info<< "1 - alpha_l of the two-phase cells: " << gasMin
+                    << " to " << gasMax << endl;
                 label nConsistent = 0, nGas = 0;
                 forAll(all, c)
                 {
