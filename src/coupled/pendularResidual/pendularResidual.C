@@ -736,14 +736,29 @@ void Foam::pendularResidual::boundaryFlux
     const scalar Fl = liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
     F[0] += Fl;
     F[2] += FlE;
-    if (medium_.saturatedZone() && Fl != 0)
+    scalar FaE;
+    F[1] += dissolvedAirBoundaryFlux(Fl, c, b, FaE);
+    F[2] += FaE;
+}
+
+
+Foam::scalar Foam::pendularResidual::dissolvedAirBoundaryFlux
+(
+    const scalar Fl,
+    const cellState& c,
+    const cellState& b,
+    scalar& enthalpyFlow
+) const
+{
+    enthalpyFlow = 0;
+    if (!medium_.saturatedZone() || Fl == 0)
     {
-        // The dissolved air: the cell's out, Henry's at the face's p_a in
-        const scalar Fa =
-            Fl*(Fl >= 0 ? c.X : medium_.dissolvedAir(b.pa, b.T));
-        F[1] += Fa;
-        F[2] += Fa*(Fl >= 0 ? c.hA : b.hA);
+        return 0;
     }
+    // The dissolved air: the cell's out, Henry's at the face's p_a in
+    const scalar Fa = Fl*(Fl >= 0 ? c.X : medium_.dissolvedAir(b.pa, b.T));
+    enthalpyFlow = Fa*(Fl >= 0 ? c.hA : b.hA);
+    return Fa;
 }
 
 
@@ -803,12 +818,15 @@ void Foam::pendularResidual::liquidBoundaryFlows
 (
     const scalarField& x,
     scalarList& mass,
+    scalarList& air,
     scalarList& energy
 ) const
 {
     mass.setSize(fvMesh_.boundary().size());
+    air.setSize(fvMesh_.boundary().size());
     energy.setSize(fvMesh_.boundary().size());
     mass = Zero;
+    air = Zero;
     energy = Zero;
     const liquidFlow* liquid = medium_.liquidFlowPtr();
     forAll(fvMesh_.boundary(), patchi)
@@ -826,14 +844,13 @@ void Foam::pendularResidual::liquidBoundaryFlows
         {
             const label celli = patch.faceCells()[i];
             const cellState c = state(celli, &x[3*celli]);
-            scalar FlE;
-            mass[patchi] +=
-                liquidBoundaryFlux
-                (
-                    patch.start() + i, patchi, i, c,
-                    boundaryState(patchi, i, c), FlE
-                );
-            energy[patchi] += FlE;
+            const cellState b = boundaryState(patchi, i, c);
+            scalar FlE, FaE;
+            const scalar Fl =
+                liquidBoundaryFlux(patch.start() + i, patchi, i, c, b, FlE);
+            mass[patchi] += Fl;
+            air[patchi] += dissolvedAirBoundaryFlux(Fl, c, b, FaE);
+            energy[patchi] += FlE + FaE;
         }
     }
 }

@@ -100,7 +100,9 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
             checkedRead::check
             (
                 alphaL_.objectPath(), "alphaL", alphaL_.primitiveField(),
-                checkedRead::closedOpen(0, 1)
+                medium_.saturatedZone()
+              ? checkedRead::closed(0, 1)
+              : checkedRead::closedOpen(0, 1)
             ),
             // p_g > 0, T within the saturation laws, no liquid near the
             // critical point, air pressure >= 0
@@ -191,13 +193,128 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     ),
     W0_(),
     A0_(),
-    E0_()
+    E0_(),
+    gasPresent_
+    (
+        IOobject
+        (
+            "gasPresent", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Xair_
+    (
+        IOobject
+        (
+            "Xair", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    pl_
+    (
+        IOobject
+        (
+            "pl", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimPressure, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    )
 {
+    // The phase states (saturatedZone): from gasPresent, Xair and pl if
+    // gasPresent is given (a restart), else liquid-only where alphaL = 1,
+    // with p_l = p - p_c(1, T) and X = Henry's at p_a = p - p_w(T, 1): the
+    // state at the bubble point, W = phi rho_l (pendularMedium's
+    // Description; p is then the DuMux convention p_l + p_c(1))
+    if (medium_.saturatedZone())
+    {
+        auto given = [&](const word& name)
+        {
+            return IOobject
+            (
+                name, mesh.time().timeName(), mesh, IOobject::MUST_READ
+            ).typeHeaderOk<volScalarField>(true);
+        };
+        const bool restart = given("gasPresent");
+        if (restart && !(given("Xair") && given("pl")))
+        {
+            FatalErrorInFunction
+                << "Field gasPresent given in " << gasPresent_.objectPath()
+                << " without Xair and pl (a restart of the saturated zone"
+                << " needs all three, as pendularFoam writes them)"
+                << exit(FatalError);
+        }
+        for (volScalarField* fld : {&gasPresent_, &Xair_, &pl_})
+        {
+            if (restart)
+            {
+                fld->primitiveFieldRef() =
+                    volScalarField
+                    (
+                        IOobject
+                        (
+                            fld->name(), mesh.time().timeName(), mesh,
+                            IOobject::MUST_READ, IOobject::NO_WRITE, false
+                        ),
+                        mesh
+                    ).primitiveField();
+            }
+        }
+        forAll(gasPresent_, celli)
+        {
+            const scalar Tc = T_[celli];
+            if (restart)
+            {
+                const scalar g = gasPresent_[celli];
+                if (g != 0 && g != 1)
+                {
+                    dictionary fieldDict;
+                    fieldDict.name() = gasPresent_.objectPath();
+                    FatalIOErrorInFunction(fieldDict)
+                        << "Field 'gasPresent' (keyword 'internalField') = "
+                        << g << " in cell " << celli << ", in file "
+                        << gasPresent_.objectPath() << nl
+                        << "    Valid: 0 (liquid-only) or 1 (gas present)"
+                        << exit(FatalIOError);
+                }
+            }
+            else if (alphaL_[celli] >= 1)
+            {
+                gasPresent_[celli] = 0;
+                pl_[celli] = p_[celli] - medium_.pcSaturated(Tc);
+                Xair_[celli] =
+                    medium_.dissolvedAir
+                    (
+                        p_[celli] - medium_.saturatedVapourPressure(Tc), Tc
+                    );
+            }
+        }
+        gasPresent_.correctBoundaryConditions();
+    }
+
     const scalarField& porosity = medium_.porosity().primitiveField();
     forAll(W_, celli)
     {
         W_[celli] =
-            medium_.waterContent(alphaL_[celli], T_[celli], porosity[celli]);
+            liquidOnly(celli)
+          ? liquidOnlyClosure
+            (
+                medium_, porosity[celli], T_[celli], pl_[celli], Xair_[celli]
+            ).W
+          : medium_.waterContent(alphaL_[celli], T_[celli], porosity[celli]);
     }
 
     WScale_ = gMax(W_.primitiveField());
@@ -373,14 +490,34 @@ void Foam::pendularState::update()
             saturationStates_[celli] = medium_.saturation(Tc);
         }
         const pendularMedium::saturationState& sat = saturationStates_[celli];
-        scalar alpha, rhoW;
-        medium_.water().liquidAndVapour
-        (
-            W_[celli], sat, phi, p_[celli], alphaOld_[celli], stepDeltaT_,
-            alphaL_[celli], alpha, rhoW
-        );
-        const cellState s =
-            closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
+        cellState s;
+        if (liquidOnly(celli))
+        {
+            // No gas: the state of (T, p_l, X); p and W follow
+            s = liquidOnlyClosure(medium_, phi, Tc, pl_[celli], Xair_[celli]);
+            p_[celli] = s.p;
+            W_[celli] = s.W;
+        }
+        else
+        {
+            scalar alpha, rhoW;
+            medium_.water().liquidAndVapour
+            (
+                W_[celli], sat, phi, p_[celli], alphaOld_[celli],
+                stepDeltaT_, alphaL_[celli], alpha, rhoW
+            );
+            s = closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
+            if (medium_.saturatedZone())
+            {
+                Xair_[celli] = s.X;
+                pl_[celli] =
+                    s.alpha > 0
+                  ? s.p
+                  + medium_.lnRelativeHumidity(s.alpha, sat)
+                   *medium_.rhoL()*R*Tc/Mw
+                  : 0;
+            }
+        }
         alphaL_[celli] = s.alpha;
         rhoW_[celli] = s.rhoW;
         pw_[celli] = s.pw;
@@ -742,6 +879,37 @@ void Foam::pendularState::startStep(const scalar dt)
 {
     alphaOld_ = alphaL_.primitiveField();
     stepDeltaT_ = dt;
+}
+
+
+Foam::labelList Foam::pendularState::phases() const
+{
+    labelList ph(gasPresent_.size(), 0);
+    forAll(ph, celli)
+    {
+        ph[celli] = liquidOnly(celli) ? 1 : 0;
+    }
+    return ph;
+}
+
+
+void Foam::pendularState::setPhases
+(
+    const labelList& phases,
+    const scalarField& pl,
+    const scalarField& X
+)
+{
+    forAll(phases, celli)
+    {
+        gasPresent_[celli] = phases[celli] == 1 ? 0 : 1;
+        if (phases[celli] == 1)
+        {
+            pl_[celli] = pl[celli];
+            Xair_[celli] = X[celli];
+        }
+    }
+    gasPresent_.correctBoundaryConditions();
 }
 
 
