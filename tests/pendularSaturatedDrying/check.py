@@ -82,7 +82,7 @@ newtonFloor = {
     'Energy': 3e6*1e-7*V,
 }
 runs = ['cells_10', 'cells_20', 'cells_40', 'serialFixed_20',
-        'parallelFixed_20', 'storage10_20', 'seed1e-6_20']
+        'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20']
 for run in runs:
     log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
     blocks = re.findall(
@@ -99,6 +99,15 @@ for run in runs:
     check(len(blocks) == 9 and worst <= 1,
           '%s: %d balances (3 writes), worst |imbalance| %.3g of its bound'
           ' (largest relative %.3g)' % (run, len(blocks), worst, worstRel))
+
+# 5. The dissolved air drained through the bottom is in the air balance
+log = open(os.path.join(scratch, 'outflow_20', 'log.pendularFoam')).read()
+airOut = [float(v) for v in re.findall(
+    r'Air balance at t = \S+ s \[kg\]:.*?out through bottom = (\S+)', log,
+    re.S)]
+check(len(airOut) == 3 and min(airOut) > 0,
+      'outflow_20: dissolved air out through bottom %s kg (in the balances'
+      ' checked above)' % airOut)
 
 # 2. Refinement: T(2 cm, 400 s) and T(1 cm, 600 s) converge (checked);
 # the gas front and T(1 cm, 400 s), T(2 cm, 600 s) do not on 10-40 cells
