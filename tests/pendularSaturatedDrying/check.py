@@ -100,6 +100,15 @@ for run in runs:
           '%s: %d balances (3 writes), worst |imbalance| %.3g of its bound'
           ' (largest relative %.3g)' % (run, len(blocks), worst, worstRel))
 
+# 6. Restart from the written phase state (400 s) with fixed steps
+same = all(x == y for x, y in zip(field('serialFixed_20', '600', 'gasPresent'),
+                                  field('restartFixed_20', '600', 'gasPresent')))
+wT = max(abs(x - y)/max(abs(x), abs(y)) for x, y in zip(
+    field('serialFixed_20', '600', 'T'), field('restartFixed_20', '600', 'T')))
+check(same and wT <= 1e-4,
+      'restart from 400 s: the same cells hold gas at 600 s (%s), T within'
+      ' %.3g relative (1e-4 required)' % (same, wT))
+
 # 5. The dissolved air drained through the bottom is in the air balance
 log = open(os.path.join(scratch, 'outflow_20', 'log.pendularFoam')).read()
 airOut = [float(v) for v in re.findall(
