@@ -55,6 +55,18 @@ Description
     lack the correction, and with a mixed boundary condition of T, p or
     pw other than surfaceHeatLoss on T, which its residual would hold at
     its last evaluated value: createNewton.H).
+    Saturated zone (liquidFlow's saturatedZone, Newton engine; issue 14):
+    a cell is two-phase (T, p_g, W) or liquid-only (T, p_l, X, X the air
+    dissolved per mass of water by Henry's law; primary-variable switching,
+    Class, Helmig & Bastian 2002), switched by pendularNewton between its
+    iterations. The phase state is carried from sub-step to sub-step
+    (restored on a rejected one) and written: gasPresent (1/0), Xair, pl;
+    in a liquid-only cell p holds p_l + p_c(1) and W its water. At the
+    start 0/alphaL = 1 makes a cell liquid-only at its bubble point (p_l =
+    p - p_c(1), X Henry's at p - p_w(T, 1)), unless gasPresent, Xair and
+    pl are given. nonlinear { gasSeed; } is the gas fraction a cell starts
+    with when its gas appears (default 1e-4). The air dissolved in the
+    liquid crossing a patch is in the air balance.
     A water, air or energy balance missing balanceTolerance (default 1e-6)
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must

@@ -27,6 +27,8 @@ Foam::pendularNewton::pendularNewton
     WTolAbs_(WTolAbs),
     dryingFactor_(dryingFactor),
     maxIter_(maxIter),
+    gasSeed_(1e-4),
+    hysteresis_(true),
     verbose_(verbose)
 {}
 
@@ -125,13 +127,15 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const pendularMedium& medium = res.medium();
     const scalarField& phi = medium.porosity().primitiveField();
     const tmp<scalarField> txNbr = res.neighbourStates(x);
+    const labelList& phase = res.phases();
     label nLocal = 0;
     for (label c = 0; c < x.size()/3; ++c)
     {
         const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
         if
         (
-            Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
+            phase[c] == pendularResidual::bothPhases
+         && Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
          && solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr())
         )
         {
@@ -213,7 +217,7 @@ bool Foam::pendularNewton::fullPores
     const pendularMedium& medium = res.medium();
     const scalarField& phi = medium.porosity().primitiveField();
     label n = 0;
-    for (label c = 0; c < x.size()/3; ++c)
+    for (label c = 0; c < x.size()/3 && !medium.saturatedZone(); ++c)
     {
         if (x[3*c + 2] >= phi[c]*medium.rhoL())
         {
@@ -241,15 +245,18 @@ bool Foam::pendularNewton::valid
 ) const
 {
     const scalar TLow = res.medium().minimumTemperature();
+    const labelList& phase = res.phases();
     bool ok = true;
     for (label c = 0; c < x.size()/3 && ok; ++c)
     {
         const scalar T = x[3*c];
         const scalar p = x[3*c + 1] + pRef;
         const scalar W = x[3*c + 2];
+        // (liquidOnly: p_l finite, tension allowed; X >= 0)
         ok =
             T >= TLow && T < GREAT
-         && p > 0 && p < GREAT
+         && (phase[c] == pendularResidual::liquidOnly ? p > -GREAT : p > 0)
+         && p < GREAT
          && W >= 0 && W < GREAT;
     }
     reduce(ok, andOp<bool>());
@@ -278,7 +285,8 @@ bool Foam::pendularNewton::chordStep
     // Taken only if it leaves every cell's water on its side of the kink
     // and above dryingFactor of its value (no projection, no chop of an
     // update above the water tolerance)
-    bool plain = system_.failure().empty();
+    bool plain =
+        system_.failure().empty() && !res.medium().saturatedZone();
     for (label c = 0; c < nCells && plain; ++c)
     {
         const scalar W = x[3*c + 2] + dx[3*c + 2];
@@ -337,7 +345,7 @@ bool Foam::pendularNewton::chordStep
 
 Foam::pendularNewton::result Foam::pendularNewton::solve
 (
-    const pendularResidual& res,
+    pendularResidual& res,
     scalarField& x,
     const scalar pRef
 )
@@ -362,6 +370,55 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     const pendularMedium& medium = res.medium();
     const scalarField& phi = medium.porosity().primitiveField();
 
+    // Phase switching (saturatedZone): the cells switched at the last
+    // pass, the switches of each cell in this solve; a first pass on the
+    // first iterate
+    const bool switching = medium.saturatedZone();
+    boolList switchedLast(nCells, false), switchedNow;
+    labelList nSwitches(nCells, Zero);
+    // (every rank calls it: collective)
+    auto switchPass = [&]()
+    {
+        label nSwitched =
+            res.switchPhases
+            (
+                x, switchedLast, switchedNow, gasSeed_, hysteresis_
+            );
+        label nOscillating = 0;
+        forAll(switchedNow, c)
+        {
+            if (switchedNow[c] && ++nSwitches[c] > maxSwitches_)
+            {
+                ++nOscillating;
+            }
+        }
+        switchedLast = switchedNow;
+        reduce(nSwitched, sumOp<label>());
+        reduce(nOscillating, sumOp<label>());
+        if (nOscillating > 0)
+        {
+            out.failure =
+                "the phase state oscillates in " + Foam::name(nOscillating)
+              + " cell(s) (more than " + Foam::name(maxSwitches_)
+              + " switches in one sub-step)";
+        }
+        if (verbose_ && nSwitched > 0)
+        {
+            Info<< "    Newton: " << nSwitched << " phase switch(es)"
+                << endl;
+        }
+        return nSwitched;
+    };
+    label nSwitchedLast = 0;
+    if (switching)
+    {
+        nSwitchedLast = switchPass();
+        if (!(out.valid = valid(res, x, pRef)))
+        {
+            return out;
+        }
+    }
+
     scalarField R(x.size());
     // The last two updates (in units of the tolerances)
     FixedList<scalar, 3> uPrev(GREAT);
@@ -384,8 +441,12 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         FixedList<scalar, 3> r(scalar(0));
         for (label c = 0; c < nCells; ++c)
         {
+            // (a liquidOnly cell's gas residual: its air's alone)
+            const scalar Rg =
+                res.phases()[c] == pendularResidual::liquidOnly
+              ? R[3*c + 1] : R[3*c] + R[3*c + 1];
             r[0] = max(r[0], mag(R[3*c])/(sW[c]*WTolAbs_));
-            r[1] = max(r[1], mag(R[3*c] + R[3*c + 1])/(sG[c]*pTol_));
+            r[1] = max(r[1], mag(Rg)/(sG[c]*pTol_));
             r[2] = max(r[2], mag(R[3*c + 2])/(sE[c]*TTol_));
         }
         for (label k = 0; k < 3; ++k)
@@ -410,9 +471,12 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             scalar rGas = 0;
             for (label c = 0; c < nCells; ++c)
             {
-                const scalar Rg = mag(R[3*c] + R[3*c + 1]);
+                const bool liquidOnly =
+                    res.phases()[c] == pendularResidual::liquidOnly;
+                const scalar Rg =
+                    mag(liquidOnly ? R[3*c + 1] : R[3*c] + R[3*c + 1]);
                 const scalar tol = sG[c]*pTol_;
-                if (Rg < tol)
+                if (Rg < tol || liquidOnly)
                 {
                     rGas = max(rGas, Rg/tol);
                     continue;
@@ -460,7 +524,16 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         scalar eMax = 0;
         for (label k = 0; k < 3; ++k)
         {
-            eMax = max(eMax, sqr(out.update[k])/max(uPrev[k], VSMALL));
+            // (no previous update of that kind, e.g. no two-phase cell's
+            // water: no estimate; the quotient would overflow)
+            eMax =
+                max
+                (
+                    eMax,
+                    uPrev[k] > 0 || out.update[k] <= 0
+                  ? sqr(out.update[k])/max(uPrev[k], VSMALL)
+                  : GREAT
+                );
         }
         if
         (
@@ -489,8 +562,11 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             return out;
         }
         rPrev = rMax;
-        if (iter == 0)
+        if (iter == 0 || nSwitchedLast > 0)
         {
+            // (after a phase switch the reference restarts: a cell the
+            // gas appears in has a gas capacity 1 - alpha = gasSeed, its
+            // scaled gas residual jumps by orders of magnitude)
             rFirst = rMax;
         }
         else if (rMax > divergenceFactor_*max(rFirst, scalar(1)))
@@ -544,9 +620,30 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         {
             u[0] = max(u[0], mag(dx[3*c])/TTol_);
             u[1] = max(u[1], mag(dx[3*c + 1])/pTol_);
-            u[2] = max(u[2], mag(dx[3*c + 2])/WTolAbs_);
             x[3*c] += dx[3*c];
             x[3*c + 1] += dx[3*c + 1];
+            if (res.phases()[c] == pendularResidual::liquidOnly)
+            {
+                // The dissolved air: its tolerance the Henry equivalent
+                // of pTol on p_a; chopped as the water
+                const scalar XTol = medium.dissolvedAir(pTol_, x[3*c]);
+                u[1] = max(u[1], mag(dx[3*c + 2])/XTol);
+                const scalar X = x[3*c + 2] + dx[3*c + 2];
+                if (X < dryingFactor_*x[3*c + 2])
+                {
+                    if (mag(dx[3*c + 2]) >= XTol)
+                    {
+                        ++nChopped;
+                    }
+                    x[3*c + 2] *= dryingFactor_;
+                }
+                else
+                {
+                    x[3*c + 2] = X;
+                }
+                continue;
+            }
+            u[2] = max(u[2], mag(dx[3*c + 2])/WTolAbs_);
             const scalar W = x[3*c + 2] + dx[3*c + 2];
             // A wet cell's step across its kink (at the new T): to the
             // kink
@@ -588,6 +685,20 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances
         nProjected += localWaterSolves(res, x, sW);
+
+        // The phase states from the new iterate: a switch is not a
+        // converged iteration
+        if (switching)
+        {
+            nSwitchedLast = switchPass();
+            nProjected += nSwitchedLast;
+            if (!out.failure.empty())
+            {
+                out.iterations = iter + 1;
+                out.valid = valid(res, x, pRef);
+                return out;
+            }
+        }
 
         if (!(out.valid = valid(res, x, pRef)))
         {

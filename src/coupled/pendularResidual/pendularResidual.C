@@ -24,7 +24,8 @@ Foam::pendularResidual::pendularResidual
     const scalarField& x0,
     const scalarField& alphaGuess,
     const scalar dt,
-    const differenceScheme scheme
+    const differenceScheme scheme,
+    const labelList& phases0
 )
 :
     coupledResidual
@@ -57,7 +58,9 @@ Foam::pendularResidual::pendularResidual
     satCache_(fvMesh_.nCells()),
     satNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
-    nbrAlphaGuess_()
+    nbrAlphaGuess_(),
+    phase_(fvMesh_.nCells(), label(bothPhases)),
+    nbrPhase_()
 {
     // No state cached yet: keys no unknown can take
     for (auto& entries : cache_)
@@ -65,6 +68,7 @@ Foam::pendularResidual::pendularResidual
         for (cacheEntry& e : entries)
         {
             e.x[0] = e.x[1] = e.x[2] = -GREAT;
+            e.phase = -1;
         }
     }
     for (auto& sats : satCache_)
@@ -104,6 +108,7 @@ Foam::pendularResidual::pendularResidual
         fvMesh_, medium_.porosity().primitiveField(), nbrPorosity_
     );
     syncTools::swapBoundaryCellList(fvMesh_, alphaGuess_, nbrAlphaGuess_);
+    setPhases(phases0.empty() ? phase_ : phases0);
 
     forAll(W0_, celli)
     {
@@ -161,6 +166,129 @@ void Foam::pendularResidual::bdf2
     }
     eulerCells_.transfer(cells);
     eulerHistory_.transfer(history);
+}
+
+
+void Foam::pendularResidual::setPhases(const labelList& phases)
+{
+    if (phases.size() != fvMesh_.nCells())
+    {
+        FatalErrorInFunction
+            << "pendularResidual::setPhases: " << phases.size()
+            << " phase states for " << fvMesh_.nCells() << " cells"
+            << exit(FatalError);
+    }
+    forAll(phases, celli)
+    {
+        if
+        (
+            phases[celli] != bothPhases
+         && !(phases[celli] == liquidOnly && medium_.saturatedZone())
+        )
+        {
+            FatalErrorInFunction
+                << "pendularResidual::setPhases: cell " << celli
+                << " phase state " << phases[celli] << "; valid: "
+                << label(bothPhases) << " (bothPhases), "
+                << label(liquidOnly) << " (liquidOnly, with liquidFlow's"
+                << " saturatedZone only)" << exit(FatalError);
+        }
+    }
+    // (a copy first: phases may be phase_ itself)
+    labelList newPhases(phases);
+    phase_.transfer(newPhases);
+    syncTools::swapBoundaryCellList(fvMesh_, phase_, nbrPhase_);
+}
+
+
+bool Foam::pendularResidual::phaseConsistent
+(
+    const label celli,
+    const scalar* x
+) const
+{
+    const scalar phi = medium_.porosity()[celli];
+    const scalar T = x[0];
+    const scalar rhoL = medium_.rhoL();
+    const scalar pw1 = medium_.saturatedVapourPressure(T);
+    if (phase_[celli] == bothPhases)
+    {
+        const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
+        return (x[2]/phi - rhoW1)/(rhoL - rhoW1) < 1;
+    }
+    const scalar pn = x[1] + pRef_ + medium_.pcSaturated(T);
+    return pn > 0 && pw1 + medium_.airPressure(x[2], T) <= pn;
+}
+
+
+Foam::label Foam::pendularResidual::switchPhases
+(
+    scalarField& x,
+    const boolList& switchedBefore,
+    boolList& switched,
+    const scalar gasSeed,
+    const bool hysteresis
+)
+{
+    const label n = fvMesh_.nCells();
+    switched.setSize(n);
+    switched = false;
+    labelList phases(phase_);
+    label nSwitched = 0;
+    const scalar rhoL = medium_.rhoL();
+    for (label c = 0; c < n && medium_.saturatedZone(); ++c)
+    {
+        scalar* xc = &x[3*c];
+        const scalar phi = medium_.porosity()[c];
+        const scalar T = xc[0];
+        const bool wide = hysteresis && switchedBefore[c];
+        const scalar pw1 = medium_.saturatedVapourPressure(T);
+        const scalar pc1 = medium_.pcSaturated(T);
+        if (phase_[c] == bothPhases)
+        {
+            const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
+            const scalar S = (xc[2]/phi - rhoW1)/(rhoL - rhoW1);
+            if (S >= 1 + (wide ? 0.01 : 0))
+            {
+                const scalar pg = xc[1] + pRef_;
+                xc[1] = pg - pc1 - pRef_;
+                xc[2] = medium_.dissolvedAir(max(pg - pw1, scalar(0)), T);
+                phases[c] = liquidOnly;
+                switched[c] = true;
+                ++nSwitched;
+            }
+        }
+        else
+        {
+            const scalar pn = xc[1] + pRef_ + pc1;
+            if
+            (
+                pn <= 0
+             || pw1 + medium_.airPressure(xc[2], T)
+              > (1 + (wide ? 0.02 : 0))*pn
+            )
+            {
+                const scalar alpha = 1 - gasSeed;
+                xc[2] = medium_.waterContent(alpha, T, phi);
+                xc[1] =
+                    xc[1]
+                  + medium_.liquidFlowPtr()->capillaryPressure().pc
+                    (
+                        alpha,
+                        min
+                        (
+                            max(T, medium_.minimumTemperature()),
+                            medium_.dryOutTemperature()
+                        )
+                    );
+                phases[c] = bothPhases;
+                switched[c] = true;
+                ++nSwitched;
+            }
+        }
+    }
+    setPhases(phases);
+    return nSwitched;
 }
 
 
@@ -255,19 +383,29 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
 ) const
 {
     FixedList<cacheEntry, nCache>& entries = cache_[celli];
+    const label phase = phase_[celli];
     for (const cacheEntry& e : entries)
     {
-        if (e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2])
+        if
+        (
+            e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2]
+         && e.phase == phase
+        )
         {
             return e.s;
         }
     }
     // A state at the same T and W (e.g. the Jacobian's step of p_g) has
     // the same liquid fraction and vapour: only the gas closure is new
+    // (two-phase cells: a liquidOnly state is cheap)
     const cellState* same = nullptr;
     for (const cacheEntry& e : entries)
     {
-        if (e.x[0] == x[0] && e.x[2] == x[2])
+        if
+        (
+            phase == bothPhases && e.phase == bothPhases
+         && e.x[0] == x[0] && e.x[2] == x[2]
+        )
         {
             same = &e.s;
             break;
@@ -286,8 +424,9 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
       : state
         (
             medium_.porosity()[celli], alphaGuess_[celli], x,
-            saturation(celli, x[0])
+            saturation(celli, x[0]), phase
         );
+    e.phase = phase;
     e.x[0] = x[0];
     e.x[1] = x[1];
     e.x[2] = x[2];
@@ -323,9 +462,19 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
     const scalar phi,
     const scalar alphaGuess,
     const scalar* x,
-    const pendularMedium::saturationState& sat
+    const pendularMedium::saturationState& sat,
+    const label phase
 ) const
 {
+    if (phase == liquidOnly)
+    {
+        // No gas: (T, p_l - p_ref, X)
+        return
+            pendularState::liquidOnlyClosure
+            (
+                medium_, phi, x[0], x[1] + pRef_, x[2]
+            );
+    }
     // Model A: the liquid fraction holding W at T and the vapour in
     // Kelvin-Laplace equilibrium with it, then pendularState's closure
     // (the inversion uses p_wsat and sigma at T, not their slopes)
@@ -436,8 +585,19 @@ void Foam::pendularResidual::scales
         const scalar pa = s.pa;
         water[celli] = a0W_[celli]*V[celli]/dt_;
         gas[celli] =
-            a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
+            s.liquidOnly
+            // dA/dp_a of the dissolved air, phi M_a H^cp
+          ? a0_*V[celli]*phi*medium_.Ma()*medium_.henry(s.T)/dt_
+          : a0_*V[celli]*phi*(1 - s.alpha)*medium_.Ma()
            /(medium_.R()*s.T*dt_);
+        if (medium_.saturatedZone() && !s.liquidOnly)
+        {
+            // and the dissolved air's, phi alpha M_a H^cp: the capacity
+            // stays finite as the gas vanishes
+            gas[celli] +=
+                a0_*V[celli]*phi*s.alpha*medium_.Ma()*medium_.henry(s.T)
+               /dt_;
+        }
         energy[celli] =
             a0_*V[celli]
            *medium_.energyCapacity
@@ -493,7 +653,7 @@ void Foam::pendularResidual::faceFlux
         state
         (
             nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei,
-            medium_.saturationValues(xNei[0])
+            medium_.saturationValues(xNei[0]), nbrPhase_[bFacei]
         );
     flux
     (
@@ -574,8 +734,32 @@ void Foam::pendularResidual::boundaryFlux
     // and the face's p_g and T; outflow carries the cell's enthalpy,
     // inflow the face's
     scalar FlE;
-    F[0] += liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    const scalar Fl = liquidBoundaryFlux(facei, patchi, i, c, b, FlE);
+    F[0] += Fl;
     F[2] += FlE;
+    scalar FaE;
+    F[1] += dissolvedAirBoundaryFlux(Fl, c, b, FaE);
+    F[2] += FaE;
+}
+
+
+Foam::scalar Foam::pendularResidual::dissolvedAirBoundaryFlux
+(
+    const scalar Fl,
+    const cellState& c,
+    const cellState& b,
+    scalar& enthalpyFlow
+) const
+{
+    enthalpyFlow = 0;
+    if (!medium_.saturatedZone() || Fl == 0)
+    {
+        return 0;
+    }
+    // The dissolved air: the cell's out, Henry's at the face's p_a in
+    const scalar Fa = Fl*(Fl >= 0 ? c.X : medium_.dissolvedAir(b.pa, b.T));
+    enthalpyFlow = Fa*(Fl >= 0 ? c.hA : b.hA);
+    return Fa;
 }
 
 
@@ -645,12 +829,15 @@ void Foam::pendularResidual::liquidBoundaryFlows
 (
     const scalarField& x,
     scalarList& mass,
+    scalarList& air,
     scalarList& energy
 ) const
 {
     mass.setSize(fvMesh_.boundary().size());
+    air.setSize(fvMesh_.boundary().size());
     energy.setSize(fvMesh_.boundary().size());
     mass = Zero;
+    air = Zero;
     energy = Zero;
     const liquidFlow* liquid = medium_.liquidFlowPtr();
     forAll(fvMesh_.boundary(), patchi)
@@ -668,14 +855,13 @@ void Foam::pendularResidual::liquidBoundaryFlows
         {
             const label celli = patch.faceCells()[i];
             const cellState c = state(celli, &x[3*celli]);
-            scalar FlE;
-            mass[patchi] +=
-                liquidBoundaryFlux
-                (
-                    patch.start() + i, patchi, i, c,
-                    boundaryState(patchi, i, c), FlE
-                );
-            energy[patchi] += FlE;
+            const cellState b = boundaryState(patchi, i, c);
+            scalar FlE, FaE;
+            const scalar Fl =
+                liquidBoundaryFlux(patch.start() + i, patchi, i, c, b, FlE);
+            mass[patchi] += Fl;
+            air[patchi] += dissolvedAirBoundaryFlux(Fl, c, b, FaE);
+            energy[patchi] += FlE + FaE;
         }
     }
 }
@@ -703,6 +889,13 @@ void Foam::pendularResidual::addLiquidFlux
         );
     F[0] += Fl;
     F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);
+    if (medium_.saturatedZone())
+    {
+        // The dissolved air, upwind, with the air's enthalpy
+        const cellState& up = Fl >= 0 ? o : n;
+        F[1] += Fl*up.X;
+        F[2] += Fl*up.X*up.hA;
+    }
 }
 
 

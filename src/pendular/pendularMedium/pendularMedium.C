@@ -75,11 +75,27 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
     ),
     pSatDryOut_(kelvin_.saturationPressure().pSat(dryOutTemperature_)),
     vapourPressure_(vapourPressureLaw::meniscus),
-    kelvinPc_(nullptr)
+    kelvinPc_(nullptr),
+    saturatedZone_(false),
+    henryHcp_(0),
+    henryVantHoff_(0),
+    henryT0_(298.15),
+    storage_(0)
 {
     // The split of the water into liquid and vapour (waterModel,
     // run-time selected; default equilibrium)
     water_ = waterModel::New(*this, closures_);
+
+    // The saturated zone lives in liquidFlow (before the unknown
+    // keywords: say where it belongs)
+    if (closures_.found("saturatedZone"))
+    {
+        FatalIOErrorInFunction(closures_)
+            << "saturatedZone in " << closures_.name() << ": it belongs in"
+            << " the sub-dictionary liquidFlow (a saturated zone needs the"
+            << " liquid's flow: without it a saturated cell cannot change)"
+            << exit(FatalIOError);
+    }
 
     // Unknown keywords: a misspelt one would silently take its default
     {
@@ -183,7 +199,7 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
                 pendularLimit()
             )
         );
-        wordList allowed({"vapourPressure"});
+        wordList allowed({"vapourPressure", "saturatedZone"});
         for (const word& key : liquidFlow_->keywords(dict))
         {
             if (key != "rhoLiquid")
@@ -218,6 +234,13 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
                     << exit(FatalIOError);
             }
             kelvinPc_ = &pc;
+        }
+
+        // The saturated zone: Henry's dissolved air and the storage of a
+        // cell without gas (see Description)
+        if (userDict.found("saturatedZone"))
+        {
+            readSaturatedZone(userDict);
         }
     }
 
@@ -617,6 +640,133 @@ void Foam::pendularMedium::report
     );
 
     table.write(Info);
+}
+
+
+void Foam::pendularMedium::readSaturatedZone(const dictionary& liquidDict)
+{
+    if (!liquidDict.isDict("saturatedZone"))
+    {
+        FatalIOErrorInFunction(liquidDict)
+            << "saturatedZone in " << liquidDict.name() << " must be a"
+            << " sub-dictionary { henry { Hcp <mol/(m3 Pa)>; vantHoff <K>;"
+            << " T0 <K>; } storage <1/Pa>; }" << exit(FatalIOError);
+    }
+    const dictionary& dict = liquidDict.subDict("saturatedZone");
+    checkedRead::checkKeywords(dict, wordList({"henry", "storage"}));
+    if (vapourPressure_ != vapourPressureLaw::kelvin)
+    {
+        FatalIOErrorInFunction(dict)
+            << "saturatedZone in " << dict.name() << " needs vapourPressure"
+            << " kelvin in " << liquidDict.name() << " (valid: kelvin):"
+            << " the menisci's law ends at alphaLMax "
+            << pendularLimit() << ", short of S = 1 where the gas"
+            << " vanishes" << exit(FatalIOError);
+    }
+    const scalar pc1Low = kelvinPc_->pc(1, minimumTemperature_);
+    const scalar pc1High = kelvinPc_->pc(1, dryOutTemperature_);
+    if (!std::isfinite(pc1Low) || !std::isfinite(pc1High))
+    {
+        FatalIOErrorInFunction(dict)
+            << "saturatedZone in " << dict.name() << ": capillaryPressure"
+            << "Model " << kelvinPc_->type() << " has an unbounded p_c at"
+            << " S = 1 (the bubble point of a saturated cell); valid: a"
+            << " law finite at S = 1 (vanGenuchten, brooksCorey, leverettJ)"
+            << exit(FatalIOError);
+    }
+    storage_ =
+        checkedRead::getOrDefault
+        (
+            dict, "storage", dimless/dimPressure, 4.5e-10,
+            checkedRead::positive()
+        ).value();
+    dictionary henryDict;
+    if (dict.found("henry"))
+    {
+        if (!dict.isDict("henry"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "henry in " << dict.name() << " must be a sub-dictionary"
+                << " { Hcp <mol/(m3 Pa)>; vantHoff <K>; T0 <K>; }"
+                << exit(FatalIOError);
+        }
+        henryDict = dict.subDict("henry");
+        checkedRead::checkKeywords
+        (
+            henryDict, wordList({"Hcp", "vantHoff", "T0"})
+        );
+    }
+    henryHcp_ =
+        checkedRead::getOrDefault
+        (
+            henryDict, "Hcp", dimMoles/dimVolume/dimPressure, 7.8e-6,
+            checkedRead::positive()
+        ).value();
+    henryVantHoff_ =
+        checkedRead::getOrDefault
+        (
+            henryDict, "vantHoff", dimTemperature, 1350,
+            checkedRead::closed(-1e4, 1e4)
+        ).value();
+    henryT0_ =
+        checkedRead::getOrDefault
+        (
+            henryDict, "T0", dimTemperature, 298.15,
+            checkedRead::closed(200, 700)
+        ).value();
+    saturatedZone_ = true;
+    Info<< "Saturated zone: Henry's law of the air, H^cp " << henryHcp_
+        << " mol/(m3 Pa) at " << henryT0_ << " K, van 't Hoff "
+        << henryVantHoff_ << " K; storage c_s " << storage_ << " 1/Pa"
+        << endl;
+}
+
+
+Foam::scalar Foam::pendularMedium::henry(const scalar T) const
+{
+    const scalar Tc =
+        min(max(T, minimumTemperature_), dryOutTemperature_);
+    return henryHcp_*std::exp(henryVantHoff_*(1/Tc - 1/henryT0_));
+}
+
+
+Foam::scalar Foam::pendularMedium::dissolvedAir
+(
+    const scalar pa,
+    const scalar T
+) const
+{
+    return saturatedZone_ ? Ma_*henry(T)*pa/rhoL() : 0;
+}
+
+
+Foam::scalar Foam::pendularMedium::airPressure
+(
+    const scalar X,
+    const scalar T
+) const
+{
+    return X*rhoL()/(Ma_*henry(T));
+}
+
+
+Foam::scalar Foam::pendularMedium::pcSaturated(const scalar T) const
+{
+    return
+        liquidFlow_->capillaryPressure().pc
+        (
+            1, min(max(T, minimumTemperature_), dryOutTemperature_)
+        );
+}
+
+
+Foam::scalar Foam::pendularMedium::saturatedVapourPressure
+(
+    const scalar T
+) const
+{
+    const saturationState sat(saturationValues(T));
+    return sat.pSat*std::exp(lnRelativeHumidity(1, sat));
 }
 
 

@@ -100,7 +100,9 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
             checkedRead::check
             (
                 alphaL_.objectPath(), "alphaL", alphaL_.primitiveField(),
-                checkedRead::closedOpen(0, 1)
+                medium_.saturatedZone()
+              ? checkedRead::closed(0, 1)
+              : checkedRead::closedOpen(0, 1)
             ),
             // p_g > 0, T within the saturation laws, no liquid near the
             // critical point, air pressure >= 0
@@ -191,13 +193,128 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     ),
     W0_(),
     A0_(),
-    E0_()
+    E0_(),
+    gasPresent_
+    (
+        IOobject
+        (
+            "gasPresent", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Xair_
+    (
+        IOobject
+        (
+            "Xair", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    pl_
+    (
+        IOobject
+        (
+            "pl", mesh.time().timeName(), mesh,
+            IOobject::NO_READ,
+            medium_.saturatedZone()
+          ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimPressure, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    )
 {
+    // The phase states (saturatedZone): from gasPresent, Xair and pl if
+    // gasPresent is given (a restart), else liquid-only where alphaL = 1,
+    // with p_l = p - p_c(1, T) and X = Henry's at p_a = p - p_w(T, 1): the
+    // state at the bubble point, W = phi rho_l (pendularMedium's
+    // Description; p is then the DuMux convention p_l + p_c(1))
+    if (medium_.saturatedZone())
+    {
+        auto given = [&](const word& name)
+        {
+            return IOobject
+            (
+                name, mesh.time().timeName(), mesh, IOobject::MUST_READ
+            ).typeHeaderOk<volScalarField>(true);
+        };
+        const bool restart = given("gasPresent");
+        if (restart && !(given("Xair") && given("pl")))
+        {
+            FatalErrorInFunction
+                << "Field gasPresent given in " << gasPresent_.objectPath()
+                << " without Xair and pl (a restart of the saturated zone"
+                << " needs all three, as pendularFoam writes them)"
+                << exit(FatalError);
+        }
+        for (volScalarField* fld : {&gasPresent_, &Xair_, &pl_})
+        {
+            if (restart)
+            {
+                fld->primitiveFieldRef() =
+                    volScalarField
+                    (
+                        IOobject
+                        (
+                            fld->name(), mesh.time().timeName(), mesh,
+                            IOobject::MUST_READ, IOobject::NO_WRITE, false
+                        ),
+                        mesh
+                    ).primitiveField();
+            }
+        }
+        forAll(gasPresent_, celli)
+        {
+            const scalar Tc = T_[celli];
+            if (restart)
+            {
+                const scalar g = gasPresent_[celli];
+                if (g != 0 && g != 1)
+                {
+                    dictionary fieldDict;
+                    fieldDict.name() = gasPresent_.objectPath();
+                    FatalIOErrorInFunction(fieldDict)
+                        << "Field 'gasPresent' (keyword 'internalField') = "
+                        << g << " in cell " << celli << ", in file "
+                        << gasPresent_.objectPath() << nl
+                        << "    Valid: 0 (liquid-only) or 1 (gas present)"
+                        << exit(FatalIOError);
+                }
+            }
+            else if (alphaL_[celli] >= 1)
+            {
+                gasPresent_[celli] = 0;
+                pl_[celli] = p_[celli] - medium_.pcSaturated(Tc);
+                Xair_[celli] =
+                    medium_.dissolvedAir
+                    (
+                        p_[celli] - medium_.saturatedVapourPressure(Tc), Tc
+                    );
+            }
+        }
+        gasPresent_.correctBoundaryConditions();
+    }
+
     const scalarField& porosity = medium_.porosity().primitiveField();
     forAll(W_, celli)
     {
         W_[celli] =
-            medium_.waterContent(alphaL_[celli], T_[celli], porosity[celli]);
+            liquidOnly(celli)
+          ? liquidOnlyClosure
+            (
+                medium_, porosity[celli], T_[celli], pl_[celli], Xair_[celli]
+            ).W
+          : medium_.waterContent(alphaL_[celli], T_[celli], porosity[celli]);
     }
 
     WScale_ = gMax(W_.primitiveField());
@@ -297,6 +414,54 @@ Foam::pendularState::cellState Foam::pendularState::closure
     s.hA = medium.airEnthalpy(T);
     s.E = medium.energy(T, W, alpha, rhoW, s.pa, phi);
     s.A = phi*(1 - alpha)*s.rhoA;
+    s.X = 0;
+    s.liquidOnly = false;
+    if (medium.saturatedZone())
+    {
+        // Henry's dissolved air in the liquid, with its enthalpy
+        s.X = medium.dissolvedAir(s.pa, T);
+        const scalar dissolved = phi*alpha*medium.rhoL()*s.X;
+        s.A += dissolved;
+        s.E += dissolved*medium.airEnthalpy(T);
+    }
+    return s;
+}
+
+
+Foam::pendularState::cellState Foam::pendularState::liquidOnlyClosure
+(
+    const pendularMedium& medium,
+    const scalar phi,
+    const scalar T,
+    const scalar pl,
+    const scalar X
+)
+{
+    const scalar R = medium.R();
+    const scalar pc1 = medium.pcSaturated(T);
+    cellState s;
+    s.T = T;
+    s.p = pl + pc1;
+    s.alpha = 1;
+    s.pw = medium.saturatedVapourPressure(T);
+    s.pa = medium.airPressure(X, T);
+    // The bubble point p_b = p_w(T, 1) + p_a(X, T) - p_c(1, T)
+    s.W =
+        phi*medium.rhoL()
+       *(1 + medium.storage()*(pl - (s.pw + s.pa - pc1)));
+    s.rhoW = medium.Mw()*s.pw/(R*T);
+    s.rhoA = medium.Ma()*s.pa/(R*T);
+    s.rhoG = s.rhoW + s.rhoA;
+    s.omega = s.rhoW/s.rhoG;
+    s.Kg = 0;
+    s.Dv = 0;
+    s.kappa = medium.kappa(1, phi);
+    s.hW = medium.vapourEnthalpy(T);
+    s.hA = medium.airEnthalpy(T);
+    s.X = X;
+    s.A = s.W*X;
+    s.E = medium.energy(T, s.W, 1, s.rhoW, s.pa, phi) + s.A*s.hA;
+    s.liquidOnly = true;
     return s;
 }
 
@@ -325,14 +490,34 @@ void Foam::pendularState::update()
             saturationStates_[celli] = medium_.saturation(Tc);
         }
         const pendularMedium::saturationState& sat = saturationStates_[celli];
-        scalar alpha, rhoW;
-        medium_.water().liquidAndVapour
-        (
-            W_[celli], sat, phi, p_[celli], alphaOld_[celli], stepDeltaT_,
-            alphaL_[celli], alpha, rhoW
-        );
-        const cellState s =
-            closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
+        cellState s;
+        if (liquidOnly(celli))
+        {
+            // No gas: the state of (T, p_l, X); p and W follow
+            s = liquidOnlyClosure(medium_, phi, Tc, pl_[celli], Xair_[celli]);
+            p_[celli] = s.p;
+            W_[celli] = s.W;
+        }
+        else
+        {
+            scalar alpha, rhoW;
+            medium_.water().liquidAndVapour
+            (
+                W_[celli], sat, phi, p_[celli], alphaOld_[celli],
+                stepDeltaT_, alphaL_[celli], alpha, rhoW
+            );
+            s = closure(medium_, phi, Tc, p_[celli], W_[celli], alpha, rhoW);
+            if (medium_.saturatedZone())
+            {
+                Xair_[celli] = s.X;
+                pl_[celli] =
+                    s.alpha > 0
+                  ? s.p
+                  + medium_.lnRelativeHumidity(s.alpha, sat)
+                   *medium_.rhoL()*R*Tc/Mw
+                  : 0;
+            }
+        }
         alphaL_[celli] = s.alpha;
         rhoW_[celli] = s.rhoW;
         pw_[celli] = s.pw;
@@ -694,6 +879,37 @@ void Foam::pendularState::startStep(const scalar dt)
 {
     alphaOld_ = alphaL_.primitiveField();
     stepDeltaT_ = dt;
+}
+
+
+Foam::labelList Foam::pendularState::phases() const
+{
+    labelList ph(gasPresent_.size(), 0);
+    forAll(ph, celli)
+    {
+        ph[celli] = liquidOnly(celli) ? 1 : 0;
+    }
+    return ph;
+}
+
+
+void Foam::pendularState::setPhases
+(
+    const labelList& phases,
+    const scalarField& pl,
+    const scalarField& X
+)
+{
+    forAll(phases, celli)
+    {
+        gasPresent_[celli] = phases[celli] == 1 ? 0 : 1;
+        if (phases[celli] == 1)
+        {
+            pl_[celli] = pl[celli];
+            Xair_[celli] = X[celli];
+        }
+    }
+    gasPresent_.correctBoundaryConditions();
 }
 
 

@@ -1,0 +1,529 @@
+/*---------------------------------------------------------------------------*\
+  hearthFoam: heat and water transfer in soil under a fire
+-------------------------------------------------------------------------------
+Application
+    testPendularSaturatedResidual
+
+Description
+    The saturated zone of pendularResidual (issue 14, slice 1: the
+    liquidOnly state (T, p_l, X) beside (T, p_g, W), Henry's dissolved air,
+    the storage c_s), on the case's mesh and initial fields, its soil with
+    liquidFlow's saturatedZone (van Genuchten, vapourPressure kelvin):
+    1. Henry's law against its closed form M_a H^cp_0 exp(B (1/T - 1/T0))
+       p_a/rho_l at 20 C and 1 atm (1e-14);
+    2. W, A, E of a liquidOnly cell at its bubble point p_l = p_b(T, X)
+       equal those of the two-phase closure at alpha = 1, W = phi rho_l,
+       p_g = p_l + p_c(1) (1e-14 of phi rho_l, of max |A| and |E|), and
+       the two-phase cell's X equal to X: every cell, 4 temperatures and 3
+       dissolved-air contents; dW/dp_l = phi rho_l c_s (central difference,
+       1e-8);
+    3. the state cache keyed by the phase: the same unknowns give the
+       liquidOnly state after setPhases;
+    4. the face-by-face Jacobian against a central difference of the full
+       residual, every column (1e-6), with liquidOnly cells (even index)
+       beside two-phase ones (odd): liquidOnly, two-phase and mixed faces
+       (x: mixed; y, z: same state), and the liquid moving across the
+       mixed faces (checked: at least 1e-3 of the largest flux);
+    5. (-switching, on a copy of the case with millingtonQuirk's vapour
+       diffusion, which vanishes with the gas, and a liquid inflow of
+       1e-8 kg/m2/s) the switching (pendularNewton, issue 14 slice 2): a
+       saturated soil
+       (every cell liquidOnly, its air 0.1 % below saturation, p_l = 1 atm)
+       heated from the top at 420 K for 2 s: Newton converges with the
+       gas appearing in the top cells (at least one switch); at the
+       solution every cell satisfies its state's criterion; the same
+       solution (phases equal, T within 10 TTol, p within 10 pTol, W
+       within 10 WTol, X within 1e-6 X) from the seed S_g = 1e-6 and with
+       the hysteresis off.
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "petscSession.H"
+#include "blockSystem.H"
+#include "pendularResidual.H"
+#include "liquidFlow.H"
+#include "pendularNewton.H"
+#include "syncTools.H"
+#include "unitChecks.H"
+
+using namespace Foam;
+
+int main(int argc, char *argv[])
+{
+    argList::addBoolOption
+    (
+        "switching",
+        "check 5 alone (Newton with phase switching; the case's vapour"
+        " diffusion vanishing at alpha_l = 1: millingtonQuirk)"
+    );
+    argList::addBoolOption
+    (
+        "parallelResidual",
+        "write the residual at a state set from the cell centres (fields"
+        " Rw, Ra, RE at time 0): serial = parallel"
+    );
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    petscSession petsc;
+
+    auto readField = [&](const word& name)
+    {
+        return volScalarField
+        (
+            IOobject(name, "0", mesh, IOobject::MUST_READ),
+            mesh
+        );
+    };
+    const volScalarField T(readField("T"));
+    const volScalarField p(readField("p"));
+    const volScalarField pw(readField("pw"));
+
+    pendularMedium medium(mesh);
+    const scalarField& phi = medium.porosity().primitiveField();
+    checkTrue
+    (
+        "saturatedZone on", medium.saturatedZone(), 1, 1, "bool"
+    );
+    const scalar rhoL = medium.rhoL();
+    const scalar cs = medium.storage();
+
+    // 6. Serial = parallel (-parallelResidual): the residual at a state
+    //    set from the cell centres (the same cells on any decomposition),
+    //    liquidOnly where sin(700 x + 1300 y + 1900 z) > 0, written as
+    //    the fields Rw, Ra, RE at time 0 (the run compares them); on 2
+    //    ranks the phases must differ across a processor face
+    if (args.found("parallelResidual"))
+    {
+        const scalar pRef = 1e5;
+        const label n = mesh.nCells();
+        const vectorField& C = mesh.C().primitiveField();
+        labelList phases(n, label(pendularResidual::bothPhases));
+        scalarField x(3*n);
+        forAll(phases, c)
+        {
+            const scalar s =
+                std::sin(700*C[c].x() + 1300*C[c].y() + 1900*C[c].z());
+            const scalar Tc = T[c] + 30*s;
+            x[3*c] = Tc;
+            if (s > 0)
+            {
+                phases[c] = pendularResidual::liquidOnly;
+                x[3*c + 1] = p[c] - pRef + 3000*s;
+                x[3*c + 2] =
+                    medium.dissolvedAir
+                    (
+                        p[c] - medium.saturatedVapourPressure(Tc), Tc
+                    )*(1 + 0.1*s);
+            }
+            else
+            {
+                x[3*c + 1] = p[c] - pRef + 100*s;
+                x[3*c + 2] = medium.waterContent(0.6 - 0.3*s, Tc, phi[c]);
+            }
+        }
+        scalarField x0(x);
+        forAll(phases, c)
+        {
+            x0[3*c] -= 0.1;
+        }
+        pendularResidual res
+        (
+            medium, T, p, pw, pRef, x0, scalarField(n, 0.5), 2,
+            coupledResidual::differenceScheme::central, phases
+        );
+        scalarField R;
+        res.residual(x, R);
+        // The processor faces between two phase states
+        scalarField ph(n), nbrPh;
+        forAll(ph, c)
+        {
+            ph[c] = phases[c];
+        }
+        syncTools::swapBoundaryCellList(mesh, ph, nbrPh);
+        label nMixed = 0;
+        forAll(mesh.boundary(), patchi)
+        {
+            const fvPatch& pp = mesh.boundary()[patchi];
+            if (!pp.coupled())
+            {
+                continue;
+            }
+            forAll(pp, i)
+            {
+                const label bf = pp.start() + i - mesh.nInternalFaces();
+                nMixed += ph[pp.faceCells()[i]] != nbrPh[bf];
+            }
+        }
+        reduce(nMixed, sumOp<label>());
+        Info<< "processor faces between two phase states: " << nMixed
+            << endl;
+        if (Pstream::parRun())
+        {
+            checkAtLeast("processor faces between phase states", nMixed, 1, 0);
+        }
+        const char* names[3] = {"Rw", "Ra", "RE"};
+        for (label k = 0; k < 3; ++k)
+        {
+            volScalarField f
+            (
+                IOobject(names[k], runTime.timeName(), mesh, IOobject::NO_READ),
+                mesh, dimensionedScalar(dimless, Zero)
+            );
+            forAll(f, c)
+            {
+                f[c] = R[3*c + k];
+            }
+            f.write();
+        }
+        Info<< nl << nChecks - nFailed << " of " << nChecks
+            << " checks passed" << endl;
+        return nFailed ? 1 : 0;
+    }
+
+    // 5. Switching in Newton (-switching: this check alone)
+    if (args.found("switching"))
+    {
+        const scalar pRef = 1e5;
+        const label n = mesh.nCells();
+        const scalarField alphaGuess(n, 0.5);
+        section("5. Phase switching: gas appears in a heated saturated soil");
+        {
+            const scalar dtS = 2;
+            labelList all(n, label(pendularResidual::liquidOnly));
+            scalarField xs(3*n);
+            forAll(all, c)
+            {
+                const scalar Tc = T[c];
+                xs[3*c] = Tc;
+                xs[3*c + 1] = 101325 - pRef;
+                xs[3*c + 2] =
+                    0.999*medium.dissolvedAir
+                    (
+                        101325 + medium.pcSaturated(Tc)
+                      - medium.saturatedVapourPressure(Tc), Tc
+                    );
+            }
+            const scalar TTol = 1e-6, pTol = 1e-3, WTol = 1e-8;
+            auto run = [&](const scalar seed, const bool hyst, scalarField& x1)
+            {
+                pendularResidual r
+                (
+                    medium, T, p, pw, pRef, xs, alphaGuess, dtS,
+                    coupledResidual::differenceScheme::central, all
+                );
+                pendularNewton newton
+                (
+                    mesh, mesh.solutionDict().subDict("coupled"), TTol, pTol,
+                    WTol, 0.1, 50, true
+                );
+                newton.setSwitching(seed, hyst);
+                x1 = xs;
+                const pendularNewton::result out = newton.solve(r, x1, pRef);
+                if (!out.valid || !out.converged)
+                {
+                    forAll(all, c)
+                    {
+                        Info<< "  cell " << c << " phase " << r.phases()[c]
+                            << " x " << x1[3*c] << " " << x1[3*c + 1] << " "
+                            << x1[3*c + 2] << " consistent "
+                            << r.phaseConsistent(c, &x1[3*c]) << endl;
+                    }
+                }
+                // The gas fraction of the two-phase cells (1 - alpha_l)
+                scalar gasMin = GREAT, gasMax = 0;
+                forAll(all, c)
+                {
+                    if (r.phases()[c] == pendularResidual::bothPhases)
+                    {
+                        const scalar g = 1 - r.state(c, &x1[3*c]).alpha;
+                        gasMin = min(gasMin, g);
+                        gasMax = max(gasMax, g);
+                    }
+                }
+                Info<< "1 - alpha_l of the two-phase cells: " << gasMin
+                    << " to " << gasMax << endl;
+                label nConsistent = 0, nGas = 0;
+                forAll(all, c)
+                {
+                    nConsistent += r.phaseConsistent(c, &x1[3*c]);
+                    nGas += r.phases()[c] == pendularResidual::bothPhases;
+                }
+                Info<< "seed " << seed << ", hysteresis " << hyst << ": "
+                    << (out.converged ? "converged" : "NOT converged")
+                    << " in " << out.iterations << " iterations "
+                    << out.failure.c_str() << "; " << nGas
+                    << " cells with gas" << endl;
+                checkTrue
+                (
+                    fmt("seed %g, hysteresis %d: converged", seed, int(hyst)),
+                    out.converged, out.iterations, 50, "iterations"
+                );
+                checkTrue
+                (
+                    fmt("seed %g: every cell consistent with its state", seed),
+                    nConsistent == n, nConsistent, n, "cells"
+                );
+                return labelList(r.phases());
+            };
+            scalarField xa, xb, xc;
+            const labelList pa = run(1e-4, true, xa);
+            label nGas = 0;
+            forAll(pa, c)
+            {
+                nGas += pa[c] == pendularResidual::bothPhases;
+            }
+            checkTrue
+            (
+                "the gas appears (cells switched)", nGas > 0, nGas, 1, ">="
+            );
+            const labelList pb = run(1e-6, true, xb);
+            const labelList pc = run(1e-4, false, xc);
+            auto compare =
+            [&](const scalarField& y, const labelList& py, const char* what)
+            {
+                scalar dT = 0, dp = 0, dW = 0, dX = 0;
+                forAll(pa, c)
+                {
+                    dT = max(dT, mag(y[3*c] - xa[3*c]));
+                    dp = max(dp, mag(y[3*c + 1] - xa[3*c + 1]));
+                    if (pa[c] == pendularResidual::liquidOnly)
+                    {
+                        dX = max(dX, mag(y[3*c + 2] - xa[3*c + 2])/xa[3*c + 2]);
+                    }
+                    else
+                    {
+                        dW = max(dW, mag(y[3*c + 2] - xa[3*c + 2]));
+                    }
+                }
+                checkTrue
+                (
+                    fmt("%s: the same phase states", what), py == pa, 1, 1,
+                    "bool"
+                );
+                checkAbs(fmt("%s: max |dT| [K]", what), dT, 0, 10*TTol);
+                checkAbs(fmt("%s: max |dp| [Pa]", what), dp, 0, 10*pTol);
+                checkAbs(fmt("%s: max |dW| [kg/m3]", what), dW, 0, 10*WTol);
+                checkAbs(fmt("%s: max |dX|/X", what), dX, 0, 1e-6);
+            };
+            compare(xb, pb, "seed S_g 1e-6");
+            compare(xc, pc, "no hysteresis");
+        }
+
+        Info<< nl << nChecks - nFailed << " of " << nChecks
+            << " checks passed" << endl;
+        return nFailed ? 1 : 0;
+    }
+
+
+    // 1. Henry's law: the defaults (Sander 2015: air as 0.79 N2 + 0.21 O2)
+    section("1. Henry's law");
+    {
+        const scalar T20 = 293.15, pa = 101325;
+        const scalar expected =
+            0.029*7.8e-6*std::exp(1350*(1/T20 - 1/298.15))*pa/1000;
+        checkRel
+        (
+            "X(1 atm, 20 C) [kg air/kg water]",
+            medium.dissolvedAir(pa, T20), expected, 1e-14
+        );
+        checkRel
+        (
+            "p_a(X(p_a)) round trip",
+            medium.airPressure(medium.dissolvedAir(pa, T20), T20), pa,
+            1e-14
+        );
+    }
+
+    // 2. Continuity at the bubble point
+    section("2. W, A, E continuous at the bubble point");
+    {
+        scalar errW = 0, errA = 0, errE = 0, errX = 0, errSlope = 0;
+        scalar maxA = 0, maxE = 0;
+        const scalarList Ts({290, 330, 372, 420});
+        const scalarList pas({2e4, 1e5, 3e5});
+        forAll(phi, c)
+        {
+            for (const scalar Tc : Ts)
+            {
+                for (const scalar pa : pas)
+                {
+                    const scalar X = medium.dissolvedAir(pa, Tc);
+                    const scalar pc1 = medium.pcSaturated(Tc);
+                    const scalar pw1 = medium.saturatedVapourPressure(Tc);
+                    const scalar pb = pw1 + medium.airPressure(X, Tc) - pc1;
+                    const pendularState::cellState l =
+                        pendularState::liquidOnlyClosure
+                        (
+                            medium, phi[c], Tc, pb, X
+                        );
+                    const pendularState::cellState g =
+                        pendularState::closure
+                        (
+                            medium, phi[c], Tc, pb + pc1, phi[c]*rhoL, 1,
+                            medium.Mw()*pw1/(medium.R()*Tc)
+                        );
+                    errW = max(errW, mag(l.W - g.W)/(phi[c]*rhoL));
+                    errA = max(errA, mag(l.A - g.A));
+                    errE = max(errE, mag(l.E - g.E));
+                    errX = max(errX, mag(l.X - g.X)/X);
+                    maxA = max(maxA, mag(g.A));
+                    maxE = max(maxE, mag(g.E));
+                    // (W is linear in p_l: no truncation; round-off
+                    // 1e-16 W/(h phi rho_l c_s), 2e-10)
+                    const scalar h = 1000;
+                    const scalar slope =
+                        (
+                            pendularState::liquidOnlyClosure
+                            (
+                                medium, phi[c], Tc, pb + h, X
+                            ).W
+                          - pendularState::liquidOnlyClosure
+                            (
+                                medium, phi[c], Tc, pb - h, X
+                            ).W
+                        )/(2*h);
+                    errSlope =
+                        max
+                        (
+                            errSlope,
+                            mag(slope - phi[c]*rhoL*cs)/(phi[c]*rhoL*cs)
+                        );
+                }
+            }
+        }
+        checkAbs("W: |W_l - W_2|/(phi rho_l)", errW, 0, 1e-14);
+        checkAbs("A: |A_l - A_2|/max |A|", errA/maxA, 0, 1e-14);
+        checkAbs("E: |E_l - E_2|/max |E|", errE/maxE, 0, 1e-14);
+        checkAbs("X: |X_l - X_2|/X", errX, 0, 1e-14);
+        checkAbs("dW/dp_l vs phi rho_l c_s (rel)", errSlope, 0, 1e-8);
+    }
+
+    // The residual: liquidOnly cells (even index) beside two-phase ones
+    const scalar pRef = 1e5;
+    const scalar dt = 2;
+    const label n = mesh.nCells();
+    labelList phases(n, label(pendularResidual::bothPhases));
+    scalarField x(3*n), x0(3*n);
+    forAll(phases, c)
+    {
+        const scalar Tc = T[c] + 30*std::cos(0.7*c);
+        const scalar s = std::sin(scalar(c));
+        x[3*c] = Tc;
+        if (c % 2 == 0)
+        {
+            phases[c] = pendularResidual::liquidOnly;
+            // p_l near the gas's, the air dissolved near 1 atm
+            x[3*c + 1] = p[c] - pRef + 3000*s;
+            x[3*c + 2] =
+                medium.dissolvedAir
+                (
+                    p[c] - medium.saturatedVapourPressure(Tc), Tc
+                )*(1 + 0.1*s);
+        }
+        else
+        {
+            const scalar alpha = 0.6 + 0.3*s*s;
+            x[3*c + 1] = p[c] - pRef + 100*std::cos(scalar(c));
+            x[3*c + 2] = medium.waterContent(alpha, Tc, phi[c]);
+        }
+    }
+    // the old state: 0.1 K cooler, the same unknowns otherwise
+    x0 = x;
+    forAll(phases, c)
+    {
+        x0[3*c] -= 0.1;
+    }
+    const scalarField alphaGuess(n, 0.5);
+    pendularResidual res
+    (
+        medium, T, p, pw, pRef, x0, alphaGuess, dt,
+        coupledResidual::differenceScheme::central, phases
+    );
+
+    // 3. The cache keyed by the phase
+    section("3. State cache keyed by the phase state");
+    {
+        labelList flipped(phases);
+        flipped[1] = pendularResidual::liquidOnly;
+        scalar xc[3] = {x[3], x[4], medium.dissolvedAir(8e4, x[3])};
+        const bool before = res.state(1, xc).liquidOnly;
+        res.setPhases(flipped);
+        const bool after = res.state(1, xc).liquidOnly;
+        res.setPhases(phases);
+        const bool back = res.state(1, xc).liquidOnly;
+        checkTrue
+        (
+            "cell 1 two-phase, liquidOnly, two-phase at the same unknowns",
+            !before && after && !back, 1, 1, "bool"
+        );
+    }
+
+    // 4. Jacobian vs central differences of the full residual
+    section("4. Jacobian with liquidOnly, two-phase and mixed faces");
+    {
+        // The liquid across the mixed faces
+        scalar maxF = 0, maxMixed = 0;
+        label nMixed = 0;
+        for (label facei = 0; facei < mesh.nInternalFaces(); ++facei)
+        {
+            const label o = mesh.faceOwner()[facei];
+            const label nb = mesh.faceNeighbour()[facei];
+            scalar F[3];
+            res.faceFlux(facei, &x[3*o], &x[3*nb], F);
+            maxF = max(maxF, mag(F[0]));
+            if (phases[o] != phases[nb])
+            {
+                ++nMixed;
+                maxMixed = max(maxMixed, mag(F[0]));
+            }
+        }
+        Info<< nMixed << " mixed faces, largest |F_w| " << maxMixed
+            << " kg/s there, " << maxF << " kg/s over all" << endl;
+        checkAtLeast("liquid across mixed faces / max |F_w|",
+            maxMixed/maxF, 1e-3, 0);
+
+        blockSystem sys(mesh, 3, mesh.solutionDict().subDict("coupled"));
+        res.jacobian(x, sys);
+        scalar worst = 0;
+        label worstColumn = -1;
+        scalarField e(x.size()), Je, Rp, Rm;
+        for (label g = 0; g < x.size(); ++g)
+        {
+            const label c = g/3, k = g % 3;
+            // T 1e-4 K, p 1e-2 Pa; W 1e-6 max(W, 1e-4); X 1e-3 X (the
+            // storage and fluxes are polynomials of degree <= 2 in X)
+            const scalar h =
+                k == 0 ? 1e-4
+              : k == 1 ? 1e-2
+              : phases[c] == pendularResidual::liquidOnly
+              ? 1e-3*max(mag(x[g]), 1e-8)
+              : 1e-6*max(mag(x[g]), 1e-4);
+            e = Zero;
+            e[g] = 1;
+            scalarField xp(x);
+            xp[g] += h;
+            sys.multiply(e, Je);
+            res.residual(xp, Rp);
+            xp[g] -= 2*h;
+            res.residual(xp, Rm);
+            const scalarField fd((Rp - Rm)/(2*h));
+            const scalar err =
+                max(mag(Je - fd))/max(max(mag(fd)), VSMALL);
+            if (err > worst)
+            {
+                worst = err;
+                worstColumn = g;
+            }
+        }
+        Info<< "worst column " << worstColumn << " (cell "
+            << worstColumn/3 << ", unknown " << worstColumn % 3 << ")"
+            << endl;
+        checkAbs("Jacobian vs central FD, every column", worst, 0, 1e-6);
+    }
+
+    Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
+        << endl;
+    return nFailed ? 1 : 0;
+}
