@@ -75,21 +75,26 @@ def main():
 
     def ratio(a, b, what):
         if a in runs and b in runs:
-            print('  %-58s %8.2f' % (what, runs[a]['wall']/runs[b]['wall']))
+            print('  %-52s %8.2f %8.2f' % (
+                what, runs[a]['wall']/runs[b]['wall'],
+                runs[a]['cpu']/runs[b]['cpu']))
 
-    print('Ratios of wall times:')
+    print('Ratios (wall, CPU; on a loaded machine the CPU times are the'
+          ' meaningful ones):')
     ratio('pendular_1', 'ahc_1', 'pendularFoam / ahcFoam, 1 rank')
     ratio('pendular_2', 'ahc_2', 'pendularFoam / ahcFoam, 2 ranks')
     ratio('segregated_1', 'pendular_1',
           'pendularFoam segregated / Newton engine, 1 rank')
     ratio('fullRange_1', 'pendular_1', 'full range / pendular, 1 rank')
     ratio('fullRange_2', 'pendular_2', 'full range / pendular, 2 ranks')
-    print('Parallel efficiency on 2 ranks, E = t1/(2 t2) (wall times):')
+    print('Parallel efficiency on 2 ranks, E = t1/(2 t2) (wall times; and'
+          ' the CPU time of 1 rank over that of the 2 ranks, summed):')
     for name in ('pendular', 'ahc', 'fullRange'):
         a, b = name + '_1', name + '_2'
         if a in runs and b in runs:
-            print('  %-58s %8.3f' % (
-                name, runs[a]['wall']/(2*runs[b]['wall'])))
+            print('  %-52s %8.3f %8.3f' % (
+                name, runs[a]['wall']/(2*runs[b]['wall']),
+                runs[a]['cpu']/runs[b]['cpu']))
     print('Peak memory (max resident set size, summed over the ranks):')
     for c, r in runs.items():
         n = n_coarse if 'Coarse' in c else n_cells
