@@ -31,7 +31,11 @@ void Foam::liquidFlow::readFixedPressure
 )
 {
     const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-    const string where("liquid boundary condition of patch " + pp.name());
+    const string where
+    (
+        "fixedPressure liquid boundary condition of patch " + pp.name()
+      + ": 'pl <Function1 of time>' or 'waterTable { level; pressure; }'"
+    );
     const bool hasPl = pDict.found("pl", keyType::LITERAL);
     const bool hasTable = pDict.found("waterTable", keyType::LITERAL);
     if (hasPl == hasTable)
