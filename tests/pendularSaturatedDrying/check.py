@@ -137,9 +137,10 @@ for k in q[10]:
     else:
         print('  (printed, not converged) ' + text)
 
-# 3. 2 ranks against serial (fixed steps): 1e-8 while every cell is
-# liquid-only (200 s); then the same phases and T within 1e-3 (the
-# sub-steps rejected differ: see the run script)
+# 3. 2 ranks against serial (fixed steps, direct linear solves): 1e-8
+# while every cell is liquid-only (200 s); then the same phases and T
+# within 1e-5 (the sub-steps where the gas appears take 15-30 chaotic
+# Newton iterations, which round-off steers: see the run script)
 def largest(t, names):
     worst = 0
     for name in names:
@@ -159,9 +160,9 @@ check(w <= 1e-8 and liquidOnly,
 for t in ('400', '600'):
     same = largest(t, ('gasPresent',)) == 0
     wT = largest(t, ('T',))
-    check(same and wT <= 1e-3,
+    check(same and wT <= 1e-5,
           '2 ranks against serial at %s s: the same cells hold gas (%s), T'
-          ' within %.3g relative (1e-3 required)' % (t, same, wT))
+          ' within %.3g relative (1e-5 required)' % (t, same, wT))
 gp = field('serialFixed_20', '600', 'gasPresent')
 check(gp[9] == 1 and gp[10] == 1,
       'the gas on both sides of the processor boundary at 600 s')
