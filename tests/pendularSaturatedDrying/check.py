@@ -82,7 +82,8 @@ newtonFloor = {
     'Energy': 3e6*1e-7*V,
 }
 runs = ['cells_10', 'cells_20', 'cells_40', 'serialFixed_20',
-        'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20']
+        'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20',
+        'step1_20', 'step0.5_20', 'lowK_20', 'lowK_40', 'lowK_80']
 for run in runs:
     log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
     blocks = re.findall(
@@ -118,9 +119,20 @@ check(len(airOut) == 3 and min(airOut) > 0,
       'outflow_20: dissolved air out through bottom %s kg (in the balances'
       ' checked above)' % airOut)
 
-# 2. Refinement: T(2 cm, 400 s) and T(1 cm, 600 s) converge (checked);
-# the gas front and T(1 cm, 400 s), T(2 cm, 600 s) do not on 10-40 cells
-# (printed only: the gas appears later in a thicker top cell)
+# 2. Refinement: T(2 cm, 400 s) and T(1 cm, 600 s) converge (checked).
+# The gas front, the water lost, T(1 cm, 400 s) and T(2 cm, 600 s) do not
+# on 10-40 cells, and cannot: the top is open (p_w of dry air) and held at
+# the wall's T, the liquid drawn up to it by capillarity (K = 1e-11 m2)
+# keeps the top cell wet and boiling at ~373 K whatever its size, so the
+# wall's heat reaches the evaporation across half a top cell, lambda (T_w
+# - T_1)/(dz/2), and the water evaporated through the top grows as the
+# cells shrink (the dry layer that must separate the 200 C wall from the
+# liquid is thinner than the top half-cell of these meshes; not a defect
+# of the phase switching: the same growth with an imposed heat flux). The
+# checks below hold that diagnosis (they fail if the top's evaporation
+# converged): the top cell within 1 K of boiling at 1 atm at 600 s, and
+# the water out through the top at 600 s more than doubled at each halving
+# (a converging quantity changes less and less: ratio -> 1)
 converging = ('T(2 cm, 400 s) [K]', 'T(1 cm, 600 s) [K]')
 q = {n: quantities('cells_%d' % n) for n in (10, 20, 40)}
 meshError = {}
@@ -136,6 +148,84 @@ for k in q[10]:
         check(abs(d2) < abs(d1), text)
     else:
         print('  (printed, not converged) ' + text)
+
+
+def waterOut(run, t):
+    """Water out through the top by time t [kg/m2] (pendularFoam's balance;
+    the column's section 1 cm x 1 cm)."""
+    log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
+    m = re.search(r'Water balance at t = %s s \[kg\]:\s*out through top = (\S+)'
+                  % t, log)
+    return float(m.group(1))/1e-4
+
+
+Tw = 473.15    # the wall at 600 s
+out = {n: waterOut('cells_%d' % n, '600') for n in (10, 20, 40)}
+top = {n: field('cells_%d' % n, '600', 'T')[-1] for n in (10, 20, 40)}
+for n in (10, 20, 40):
+    print('  cells_%d at 600 s: water out through the top %.4g kg/m2, top'
+          ' cell %.2f K, lambda (T_w - T_1)/(dz/2) = %.3g W/m2'
+          % (n, out[n], top[n], 1.0*(Tw - top[n])/(0.5*H/n)))
+check(all(abs(top[n] - 373.15) <= 1 for n in (20, 40)),
+      'the top cell boils at 600 s on 20 and 40 cells (%.2f, %.2f K; 373.15'
+      ' +- 1 K required)' % (top[20], top[40]))
+check(out[20] > 2*out[10] and out[40] > 2*out[20],
+      'the water out through the top at 600 s grows with the top cell\'s'
+      ' conductance, not converging: %.3g, %.3g, %.3g kg/m2 on 10, 20, 40'
+      ' cells (ratios %.2f, %.2f; > 2 required)'
+      % (out[10], out[20], out[40], out[20]/out[10], out[40]/out[20]))
+# The time step is not the cause: on 20 cells, maxDeltaTemperature 2, 1,
+# 0.5 K (maxDeltaT 120, 60, 60 s) change the water out at 600 s less and
+# less, and by less than 5 % of the 20 -> 40 cells change (the time error,
+# first order, below a tenth of the space one; 1.69258, 1.68073, 1.67288
+# kg/m2 measured), T at 1 and 2 cm at 400 and 600 s by less than 0.5 K
+# (0.25 K measured, T(1 cm, 400 s); the 20 -> 40 cells changes of the
+# quantities printed above as not converged are 7 K)
+st = [out[20]] + [waterOut('step%s_20' % m, '600') for m in ('1', '0.5')]
+d1, d2 = st[1] - st[0], st[2] - st[1]
+check(abs(d2) < abs(d1) and abs(st[2] - st[0]) < 0.05*abs(out[40] - out[20]),
+      'steps 2, 1, 0.5 K on 20 cells: water out at 600 s %.6g, %.6g, %.6g'
+      ' kg/m2 (changes %.3g, %.3g; the change %.3g below 5 %% of the 20 ->'
+      ' 40 cells change %.3g)' % (st[0], st[1], st[2], d1, d2, st[2] - st[0],
+                                  out[40] - out[20]))
+qs = quantities('step0.5_20')
+wt = max(abs(qs[k] - q[20][k]) for k in qs if k.startswith('T'))
+check(wt < 0.5, 'steps 2 -> 0.5 K on 20 cells: T at 1, 2 cm, 400, 600 s'
+      ' within %.3g K (0.5 K required)' % wt)
+
+# 2b. The same column with the liquid's permeability 1e-14 m2: the
+# capillary supply falls short of the evaporation, the top dries and the
+# front recedes from it, a dry zone the meshes resolve: the front (alpha_l
+# = 0.999) at 400 and 600 s and T at 1 and 2 cm converge on 20, 40,
+# 80 cells (10 cells: too coarse, the gas still in the top cell alone at
+# 400 s): each change smaller than the previous, the observed order
+# printed. Measured: the 0.999 front at 600 s 27.42, 28.19, 28.22 mm
+# (changes 0.77, 0.035 mm); T(2 cm, 600 s) barely (0.735, 0.703 K); the
+# water out through the top at 400 s does not (0.15, 0.65, 1.22 kg/m2 on
+# 20-80 cells: the top cell still wet and boiling then, as above), nor
+# the front at alpha_l = 0.9 at 600 s (14.05, 13.90, 13.03 mm), printed
+def lowK(run):
+    r = quantities(run)
+    r['front(600 s) [m]'] = front(run, '600')
+    return r
+
+
+lk = {n: lowK('lowK_%d' % n) for n in (20, 40, 80)}
+for k in lk[20]:
+    d1 = lk[40][k] - lk[20][k]
+    d2 = lk[80][k] - lk[40][k]
+    order = math.log2(abs(d1/d2)) if d2 != 0 and d1 != 0 else float('nan')
+    check(abs(d2) < abs(d1),
+          'K 1e-14: %s: %.6g, %.6g, %.6g on 20, 40, 80 cells (changes %.3g,'
+          ' %.3g: observed order %.2f)' % (k, lk[20][k], lk[40][k], lk[80][k],
+                                           d1, d2, order))
+print('  (printed, not converged) K 1e-14: front at alpha_l = 0.9 at 600 s'
+      ' %.4g, %.4g, %.4g mm on 20, 40, 80 cells'
+      % tuple(1e3*front('lowK_%d' % n, '600', 0.9) for n in (20, 40, 80)))
+print('  (printed, not converged) K 1e-14: water out through the top at 400'
+      ' s %.3g, %.3g, %.3g kg/m2 on 20, 40, 80 cells; at 600 s %.3g, %.3g,'
+      ' %.3g' % tuple([waterOut('lowK_%d' % n, t) for t in ('400', '600')
+                       for n in (20, 40, 80)]))
 
 # 3. 2 ranks against serial (fixed steps, direct linear solves): 1e-8
 # while every cell is liquid-only (200 s); then the same phases and T
