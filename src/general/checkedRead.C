@@ -798,6 +798,26 @@ void Foam::checkedRead::check
 }
 
 
+void Foam::checkedRead::checkDimensions
+(
+    const fileName& fieldFile,
+    const word& fieldName,
+    const dimensionSet& found,
+    const dimensionSet& expected
+)
+{
+    if (found != expected)
+    {
+        dictionary fieldDict;
+        fieldDict.name() = fieldFile;
+        FatalIOErrorInFunction(fieldDict)
+            << "Field '" << fieldName << "' (keyword 'dimensions') = "
+            << found << " in file " << fieldFile << ": expected "
+            << expected << nl << exit(FatalIOError);
+    }
+}
+
+
 Foam::dimensionedScalar Foam::checkedRead::get
 (
     const dictionary& dict,

@@ -73,13 +73,39 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     // (Celsius typed as kelvin): FatalIOError before any step.
     // Gas (air + vapour) pressure p_g: an unknown; its boundary conditions
     // say where the soil is open (fixed) or impermeable (zeroGradient)
-    p_((temperatureCheck::initial(T_), readIO("p", mesh)), mesh),
+    p_
+    (
+        (
+            checkedRead::checkDimensions(T_, dimTemperature),
+            temperatureCheck::initial(T_),
+            readIO("p", mesh)
+        ),
+        mesh
+    ),
     // Vapour partial pressure p_w: in the cells the Kelvin-Laplace
     // equilibrium with the menisci; on open patches the atmosphere's
-    pw_(readIO("pw", mesh), mesh),
+    pw_
+    (
+        (checkedRead::checkDimensions(p_, dimPressure), readIO("pw", mesh)),
+        mesh
+    ),
     // Liquid fraction of the pore volume: the initial state, then a result
-    alphaL_(readIO("alphaL", mesh), mesh),
-    medium_((Info<< "Reading pendular properties\n" << endl, mesh)),
+    alphaL_
+    (
+        (
+            checkedRead::checkDimensions(pw_, dimPressure),
+            readIO("alphaL", mesh)
+        ),
+        mesh
+    ),
+    medium_
+    (
+        (
+            checkedRead::checkDimensions(alphaL_, dimless),
+            Info<< "Reading pendular properties\n" << endl,
+            mesh
+        )
+    ),
     muGas_("muGas", dimDynamicViscosity, medium_.gasViscosity()),
     Dv_
     (
@@ -234,76 +260,7 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
         zeroGradientFvPatchScalarField::typeName
     )
 {
-    // The phase states (saturatedZone): from gasPresent, Xair and pl if
-    // gasPresent is given (a restart), else liquid-only where alphaL = 1,
-    // with p_l = p - p_c(1, T) and X = Henry's at p_a = p - p_w(T, 1): the
-    // state at the bubble point, W = phi rho_l (pendularMedium's
-    // Description; p is then the DuMux convention p_l + p_c(1))
-    if (medium_.saturatedZone())
-    {
-        auto given = [&](const word& name)
-        {
-            return IOobject
-            (
-                name, mesh.time().timeName(), mesh, IOobject::MUST_READ
-            ).typeHeaderOk<volScalarField>(true);
-        };
-        const bool restart = given("gasPresent");
-        if (restart && !(given("Xair") && given("pl")))
-        {
-            FatalErrorInFunction
-                << "Field gasPresent given in " << gasPresent_.objectPath()
-                << " without Xair and pl (a restart of the saturated zone"
-                << " needs all three, as pendularFoam writes them)"
-                << exit(FatalError);
-        }
-        for (volScalarField* fld : {&gasPresent_, &Xair_, &pl_})
-        {
-            if (restart)
-            {
-                fld->primitiveFieldRef() =
-                    volScalarField
-                    (
-                        IOobject
-                        (
-                            fld->name(), mesh.time().timeName(), mesh,
-                            IOobject::MUST_READ, IOobject::NO_WRITE, false
-                        ),
-                        mesh
-                    ).primitiveField();
-            }
-        }
-        forAll(gasPresent_, celli)
-        {
-            const scalar Tc = T_[celli];
-            if (restart)
-            {
-                const scalar g = gasPresent_[celli];
-                if (g != 0 && g != 1)
-                {
-                    dictionary fieldDict;
-                    fieldDict.name() = gasPresent_.objectPath();
-                    FatalIOErrorInFunction(fieldDict)
-                        << "Field 'gasPresent' (keyword 'internalField') = "
-                        << g << " in cell " << celli << ", in file "
-                        << gasPresent_.objectPath() << nl
-                        << "    Valid: 0 (liquid-only) or 1 (gas present)"
-                        << exit(FatalIOError);
-                }
-            }
-            else if (alphaL_[celli] >= 1)
-            {
-                gasPresent_[celli] = 0;
-                pl_[celli] = p_[celli] - medium_.pcSaturated(Tc);
-                Xair_[celli] =
-                    medium_.dissolvedAir
-                    (
-                        p_[celli] - medium_.saturatedVapourPressure(Tc), Tc
-                    );
-            }
-        }
-        gasPresent_.correctBoundaryConditions();
-    }
+    readPhaseStates();
 
     const scalarField& porosity = medium_.porosity().primitiveField();
     forAll(W_, celli)
@@ -335,6 +292,306 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     update();
     fluxes();
     storeOld();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::pendularState::readPhaseStates()
+{
+    const fvMesh& mesh = mesh_;
+    const word timeName(mesh.time().timeName());
+    const wordList names({"gasPresent", "Xair", "pl"});
+    const List<volScalarField*> fields({&gasPresent_, &Xair_, &pl_});
+    const dimensionSet* dims[] = {&dimless, &dimless, &dimPressure};
+
+    // A dictionary named after a file, for FatalIOError
+    auto fileDict = [](const fileName& file)
+    {
+        dictionary dict;
+        dict.name() = file;
+        return dict;
+    };
+    // The path of field name on processor proci (the case's in serial)
+    auto pathOn = [&](const word& name, const label proci)
+    {
+        if (!Pstream::parRun())
+        {
+            return fileName(mesh.time().path()/timeName/name);
+        }
+        return fileName
+        (
+            mesh.time().rootPath()/mesh.time().globalCaseName()
+           /("processor" + Foam::name(proci))/timeName/name
+        );
+    };
+
+    // Which of the three are given, on every processor alike: the
+    // processors holding each (a field on some processors only is an
+    // error, not a start that differs from one processor to the next)
+    List<bool> given(names.size(), false);
+    forAll(names, i)
+    {
+        labelList has(Pstream::nProcs(), 0);
+        has[Pstream::myProcNo()] =
+            IOobject
+            (
+                names[i], timeName, mesh, IOobject::MUST_READ
+            ).typeHeaderOk<volScalarField>(true);
+        Pstream::gatherList(has);
+        Pstream::scatterList(has);
+        given[i] = (has.find(1) != -1);
+        const label missing = has.find(0);
+        if (given[i] && missing != -1)
+        {
+            FatalIOErrorInFunction(fileDict(pathOn(names[i], missing)))
+                << "Field " << names[i] << " missing in "
+                << pathOn(names[i], missing) << " but given in "
+                << pathOn(names[i], has.find(1)) << ": the"
+                << " processors must all have it or none (decompose the"
+                << " case's fields again)" << exit(FatalIOError);
+        }
+    }
+
+    if (!medium_.saturatedZone())
+    {
+        forAll(names, i)
+        {
+            if (given[i])
+            {
+                const fileName file(pathOn(names[i], Pstream::myProcNo()));
+                FatalIOErrorInFunction(fileDict(file))
+                    << "Field " << names[i] << " given in " << file
+                    << " without saturatedZone: it is used only by the"
+                    << " saturated zone (the sub-dictionary saturatedZone"
+                    << " of liquidFlow in " << medium_.closureDict().name()
+                    << "); remove the file, or add saturatedZone"
+                    << exit(FatalIOError);
+            }
+        }
+        return;
+    }
+
+    // Without gasPresent: the cells start from alphaL (below); Xair or pl
+    // alone would be ignored
+    if (!given[0])
+    {
+        for (label i : {1, 2})
+        {
+            if (given[i])
+            {
+                const fileName file(pathOn(names[i], Pstream::myProcNo()));
+                FatalIOErrorInFunction(fileDict(file))
+                    << "Field " << names[i] << " given in " << file
+                    << " without gasPresent ("
+                    << pathOn(names[0], Pstream::myProcNo()) << " missing):"
+                    << " a chosen start of the saturated zone needs"
+                    << " gasPresent, Xair and pl (as pendularFoam writes"
+                    << " them); without gasPresent the cells start from"
+                    << " alphaL (liquid-only at the bubble point where"
+                    << " alphaL = 1): give gasPresent, or remove Xair and pl"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    else
+    {
+        for (label i : {1, 2})
+        {
+            if (!given[i])
+            {
+                const fileName file(pathOn(names[i], Pstream::myProcNo()));
+                FatalIOErrorInFunction(fileDict(file))
+                    << "Field " << names[i] << " missing: " << file
+                    << " not found, while gasPresent is given in "
+                    << pathOn(names[0], Pstream::myProcNo()) << ": a"
+                    << " chosen start (or a restart) of the saturated zone"
+                    << " needs gasPresent, Xair and pl (as pendularFoam"
+                    << " writes them)" << exit(FatalIOError);
+            }
+        }
+    }
+
+    if (!given[0])
+    {
+        // Liquid-only where alphaL = 1, with p_l = p - p_c(1, T) and X =
+        // Henry's at p_a = p - p_w(T, 1): the state at the bubble point,
+        // W = phi rho_l (pendularMedium's Description; p is then the DuMux
+        // convention p_l + p_c(1))
+        forAll(gasPresent_, celli)
+        {
+            if (alphaL_[celli] >= 1)
+            {
+                const scalar Tc = T_[celli];
+                gasPresent_[celli] = 0;
+                pl_[celli] = p_[celli] - medium_.pcSaturated(Tc);
+                Xair_[celli] =
+                    medium_.dissolvedAir
+                    (
+                        p_[celli] - medium_.saturatedVapourPressure(Tc), Tc
+                    );
+            }
+        }
+        gasPresent_.correctBoundaryConditions();
+        return;
+    }
+
+    // A chosen start or a restart: the three fields, their dimensions
+    forAll(names, i)
+    {
+        const volScalarField fld
+        (
+            IOobject
+            (
+                names[i], timeName, mesh, IOobject::MUST_READ,
+                IOobject::NO_WRITE, false
+            ),
+            mesh
+        );
+        checkedRead::checkDimensions(fld, *dims[i]);
+        fields[i]->primitiveFieldRef() = fld.primitiveField();
+    }
+    const fileName gFile(pathOn(names[0], Pstream::myProcNo()));
+    const fileName XFile(pathOn(names[1], Pstream::myProcNo()));
+    const fileName plFile(pathOn(names[2], Pstream::myProcNo()));
+
+    // The phase state of a cell and the liquid fraction agree: a
+    // liquid-only cell (gasPresent 0) holds only liquid, alphaL = 1; a cell
+    // with gas (gasPresent 1) any alphaL in [0, 1], 1 included (the bubble
+    // point, where the two closures agree, and what a liquid fraction
+    // within 5e-11 of 1 is written as with 10 digits)
+    forAll(gasPresent_, celli)
+    {
+        const scalar g = gasPresent_[celli];
+        if (g != 0 && g != 1)
+        {
+            FatalIOErrorInFunction(fileDict(gFile))
+                << "Field 'gasPresent' (keyword 'internalField') = "
+                << g << " in cell " << celli << ", in file " << gFile << nl
+                << "    Valid: 0 (liquid-only) or 1 (gas present)"
+                << exit(FatalIOError);
+        }
+        if (g == 0 && alphaL_[celli] < 1)
+        {
+            FatalIOErrorInFunction(fileDict(gFile))
+                << "Field 'gasPresent' (keyword 'internalField') = 0"
+                << " (liquid-only) in cell " << celli << ", in file " << gFile
+                << ", where alphaL = " << alphaL_[celli] << " < 1 (file "
+                << alphaL_.objectPath() << "): inconsistent." << nl
+                << "    Valid: a liquid-only cell (gasPresent 0) has alphaL"
+                << " = 1; a cell with alphaL < 1 holds gas (gasPresent 1)"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The liquid-only cells' (T, p_l, X). The bubble point of a cell is
+    //     p_b = p_w(T, 1) + p_a(X, T) - p_c(1, T),
+    // p_a(X, T) = X rho_l/(M_a H^cp(T)) the air pressure in Henry's
+    // equilibrium with the dissolved X (Henry's law, Sander 2015; the
+    // closure of liquidOnlyClosure): below p_b a bubble grows, the gas is
+    // present. Hence, in a liquid-only cell,
+    //     p_w(T, 1) - p_c(1, T) <= p_l   (the bubble point without air)
+    //     0 <= X <= X_max = M_a H^cp(T) (p_l + p_c(1, T) - p_w(T, 1))/rho_l
+    // (X_max: Henry's X at an air pressure equal to the gas pressure of a
+    // bubble, p_l + p_c(1), less its vapour), and
+    //     p_l <= p_b + 0.05/c_s
+    // the storage law W = phi rho_l (1 + c_s (p_l - p_b)) being linear, a
+    // first-order expansion, held to a 5 % change of the liquid's density
+    // (water's c_s = 4.5e-10 1/Pa: 1.1e8 Pa, about the 4 % water is
+    // denser at 100 MPa, IAPWS-95). In cells with gas, Xair and pl follow
+    // from (T, p_g, alphaL) by the closure (files' values unused)
+    const scalar plSpan = 0.05/medium_.storage();
+    forAll(gasPresent_, celli)
+    {
+        if (!liquidOnly(celli))
+        {
+            continue;
+        }
+        const scalar Tc = T_[celli];
+        const scalar pl = pl_[celli];
+        const scalar X = Xair_[celli];
+        const scalar pw1 = medium_.saturatedVapourPressure(Tc);
+        const scalar pc1 = medium_.pcSaturated(Tc);
+        const scalar plMin = pw1 - pc1;
+        if (!std::isfinite(pl) || pl < plMin)
+        {
+            FatalIOErrorInFunction(fileDict(plFile))
+                << "Field 'pl' (keyword 'internalField') = " << pl
+                << " Pa in the liquid-only cell " << celli << " (T = " << Tc
+                << " K) is below the bubble point without air, p_w(T, 1)"
+                << " - p_c(1, T) = " << plMin << " Pa, in file " << plFile
+                << nl << "    Valid: p_l in [p_b, p_b + 0.05/c_s], p_b = "
+                << "p_w(T, 1) + p_a(X, T) - p_c(1, T) the bubble point (in"
+                << " this cell [" << plMin + medium_.airPressure(max(X, scalar(0)), Tc)
+                << ", " << plMin + medium_.airPressure(max(X, scalar(0)), Tc) + plSpan
+                << "] Pa); below it the gas is present (gasPresent 1)"
+                << exit(FatalIOError);
+        }
+        const scalar XMax = medium_.dissolvedAir(pl - plMin, Tc);
+        if (!std::isfinite(X) || X < 0 || X > XMax)
+        {
+            FatalIOErrorInFunction(fileDict(XFile))
+                << "Field 'Xair' (keyword 'internalField') = " << X
+                << " in the liquid-only cell " << celli << " (T = " << Tc
+                << " K, p_l = " << pl << " Pa) is outside its valid range"
+                << " [0, " << XMax << "] in file " << XFile << nl
+                << "    Valid: 0 <= X <= X_max = M_a H^cp(T) (p_l + p_c(1, T)"
+                << " - p_w(T, 1))/rho_l, Henry's dissolved air at the air"
+                << " pressure of a bubble at p_l (above it the liquid is"
+                << " below its bubble point: the gas is present,"
+                << " gasPresent 1)" << exit(FatalIOError);
+        }
+        const scalar pb = plMin + medium_.airPressure(X, Tc);
+        if (pl > pb + plSpan)
+        {
+            FatalIOErrorInFunction(fileDict(plFile))
+                << "Field 'pl' (keyword 'internalField') = " << pl
+                << " Pa in the liquid-only cell " << celli << " (T = " << Tc
+                << " K) is above its valid range [p_b, p_b + 0.05/c_s] = ["
+                << pb << ", " << pb + plSpan << "] Pa in file " << plFile
+                << nl << "    (p_b the bubble point; the storage law W = phi"
+                << " rho_l (1 + c_s (p_l - p_b)), c_s = "
+                << medium_.storage() << " 1/Pa, is held to a 5 % change of"
+                << " the liquid's density)" << exit(FatalIOError);
+        }
+    }
+
+    // p in a liquid-only cell is derived: p_l + p_c(1, T) (update()). A
+    // value in 0/p that differs beyond the round-off of the written fields
+    // (6 digits, OpenFOAM's default writePrecision) is overridden: warned
+    label nOverridden = 0;
+    label first = -1;
+    forAll(gasPresent_, celli)
+    {
+        if (liquidOnly(celli))
+        {
+            const scalar pDerived = pl_[celli] + medium_.pcSaturated(T_[celli]);
+            if (mag(p_[celli] - pDerived) > 1e-5*mag(pDerived))
+            {
+                if (first == -1)
+                {
+                    first = celli;
+                }
+                ++nOverridden;
+            }
+        }
+    }
+    if (returnReduce(nOverridden, sumOp<label>()) > 0)
+    {
+        if (first != -1)
+        {
+            WarningInFunction
+                << nOverridden << " liquid-only cell(s) with p in "
+                << p_.objectPath() << " other than p_l + p_c(1, T) (the"
+                << " first: cell " << first << ", p = " << p_[first]
+                << " Pa, p_l + p_c(1, T) = "
+                << pl_[first] + medium_.pcSaturated(T_[first]) << " Pa from "
+                << plFile << "): in a liquid-only cell p is derived from pl"
+                << " (the gas pressure a bubble would have); the file's p"
+                << " is not used there" << endl;
+        }
+    }
+    gasPresent_.correctBoundaryConditions();
 }
 
 
