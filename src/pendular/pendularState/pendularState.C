@@ -459,9 +459,20 @@ void Foam::pendularState::readPhaseStates()
     // liquid-only cell (gasPresent 0) holds only liquid, alphaL = 1; a cell
     // with gas (gasPresent 1) any alphaL in [0, 1], 1 included (the bubble
     // point, where the two closures agree, and what a liquid fraction
-    // within 5e-11 of 1 is written as with 10 digits)
+    // within 5e-11 of 1 is written as with 10 digits): warned, as the
+    // phase switching decides there at the first step
+    label nBubble = 0;
+    label firstBubble = -1;
     forAll(gasPresent_, celli)
     {
+        if (gasPresent_[celli] == 1 && alphaL_[celli] >= 1)
+        {
+            if (firstBubble == -1)
+            {
+                firstBubble = celli;
+            }
+            ++nBubble;
+        }
         const scalar g = gasPresent_[celli];
         if (g != 0 && g != 1)
         {
@@ -482,6 +493,16 @@ void Foam::pendularState::readPhaseStates()
                 << " = 1; a cell with alphaL < 1 holds gas (gasPresent 1)"
                 << exit(FatalIOError);
         }
+    }
+
+    if (returnReduce(nBubble, sumOp<label>()) > 0 && firstBubble != -1)
+    {
+        WarningInFunction
+            << nBubble << " cell(s) with gas (gasPresent 1 in " << gFile
+            << ") at alphaL = 1 (the first: cell " << firstBubble << ", file "
+            << alphaL_.objectPath() << "): at the bubble point, where the"
+            << " gas-present and liquid-only states agree; the phase"
+            << " switching decides their state at the first step" << endl;
     }
 
     // The liquid-only cells' (T, p_l, X). The bubble point of a cell is
