@@ -45,8 +45,8 @@ Foam::scalar Foam::liquidFlow::checkedPl
             << "Keyword 'pl' of the fixedPressure liquid boundary condition"
             << " of patch '" << mesh_.boundaryMesh()[patchi].name()
             << "' in " << dict.name() << ": p_l = " << pl << " Pa at time "
-            << t << " s is outside its valid range [" << plMin_ << ", "
-            << plMax_ << "] Pa (from the Kelvin limit of an oven-dry soil"
+            << t << " s is outside its valid range [" << Foam::name(plMin_)
+            << ", " << Foam::name(plMax_) << "] Pa (from the Kelvin limit of an oven-dry soil"
             << " to the compressed liquid's range)" << exit(FatalIOError);
     }
     return pl;
@@ -171,8 +171,8 @@ void Foam::liquidFlow::readFixedPressure
                 << " water table of patch '" << pp.name() << "' in "
                 << tDict.name() << ": the liquid pressure of face " << i
                 << " (height " << -(darcy_.g() & Cf[i])/magG << " m), "
-                << pl << " Pa, is below p_l's valid range [" << plMin_
-                << ", " << plMax_ << "] Pa: the water table is too deep"
+                << pl << " Pa, is below p_l's valid range ["
+                << Foam::name(plMin_) << ", " << Foam::name(plMax_) << "] Pa: the water table is too deep"
                 << exit(FatalIOError);
         }
     }
@@ -446,7 +446,7 @@ Foam::liquidDarcyFlux::liquidState Foam::liquidFlow::boundaryState
             << ": p_l = " << pl << " Pa at time " << mesh_.time().value()
             << " s is above the gas pressure p_g = " << pg << " Pa of its"
             << " face " << i << " (cell " << mesh_.faceOwner()[facei]
-            << "): valid range [" << plMin_ << ", " << pg << "] Pa"
+            << "): valid range [" << Foam::name(plMin_) << ", " << pg << "] Pa"
             << " (p_l <= p_g of the face's cell: an over-pressured, ponded"
             << " face is beyond the saturation form; pendularFoam's"
             << " saturatedZone allows it)" << exit(FatalIOError);
