@@ -315,6 +315,50 @@ void readScope
     }
 }
 
+//- The keywords the Function1 types of OpenFOAM (v1912) read from the
+//  dictionary they are given besides the entry itself (TableBase:
+//  outOfBounds, interpolationScheme; the others their coefficients)
+const Foam::HashTable<Foam::wordList>& function1TypeKeywords()
+{
+    static const Foam::HashTable<Foam::wordList> typeKeys
+    {
+        {"table", {"outOfBounds", "interpolationScheme"}},
+        {"tableFile", {"file", "outOfBounds", "interpolationScheme"}},
+        {
+            "csvFile",
+            {
+                "nHeaderLine", "refColumn", "componentColumns", "separator",
+                "mergeSeparators", "file", "outOfBounds",
+                "interpolationScheme"
+            }
+        },
+        {"sine", {"t0", "amplitude", "frequency", "scale", "level"}},
+        {
+            "square",
+            {"t0", "markSpace", "amplitude", "frequency", "scale", "level"}
+        },
+        {"scale", {"scale", "value"}},
+        {"linearRamp", {"start", "duration"}},
+        {"quadraticRamp", {"start", "duration"}},
+        {"halfCosineRamp", {"start", "duration"}},
+        {"quarterSineRamp", {"start", "duration"}},
+        {"quarterCosineRamp", {"start", "duration"}}
+    };
+    return typeKeys;
+}
+
+
+//- The Function1 types of OpenFOAM that read their value from the entry
+//  named as the Function1 in the dictionary they are given (Constant,
+//  Uniform, Table, Polynomial: 'dict.lookup(entryName)')
+bool function1ReadsEntry(const Foam::word& type)
+{
+    return
+        type == "constant" || type == "uniform" || type == "table"
+     || type == "polynomial";
+}
+
+
 } // End anonymous namespace
 
 
@@ -608,37 +652,80 @@ Foam::wordList Foam::checkedRead::function1Keywords
     }
     const word type(tokens.first().wordToken());
 
-    static const HashTable<wordList> typeKeys
-    {
-        {"table", {"outOfBounds", "interpolationScheme"}},
-        {"tableFile", {"file", "outOfBounds", "interpolationScheme"}},
-        {
-            "csvFile",
-            {
-                "nHeaderLine", "refColumn", "componentColumns", "separator",
-                "mergeSeparators", "file", "outOfBounds",
-                "interpolationScheme"
-            }
-        },
-        {"sine", {"t0", "amplitude", "frequency", "scale", "level"}},
-        {
-            "square",
-            {"t0", "markSpace", "amplitude", "frequency", "scale", "level"}
-        },
-        {"scale", {"scale", "value"}},
-        {"linearRamp", {"start", "duration"}},
-        {"quadraticRamp", {"start", "duration"}},
-        {"halfCosineRamp", {"start", "duration"}},
-        {"quarterSineRamp", {"start", "duration"}},
-        {"quarterCosineRamp", {"start", "duration"}}
-    };
-
+    const HashTable<wordList>& typeKeys = function1TypeKeywords();
     const auto iter = typeKeys.cfind(type);
     if (iter.found())
     {
         keys.append(iter.val());
     }
     return keys;
+}
+
+
+void Foam::checkedRead::checkFunction1Coeffs
+(
+    const dictionary& dict,
+    const word& key,
+    const string& where
+)
+{
+    const word coeffsName(key + "Coeffs");
+    const entry* eptr = dict.findEntry(key, keyType::LITERAL);
+    if (!eptr || eptr->isDict() || !dict.isDict(coeffsName))
+    {
+        return;
+    }
+    const dictionary& coeffs = dict.subDict(coeffsName);
+    const tokenList& tokens = static_cast<const tokenList&>(eptr->stream());
+    const string context
+    (
+        (where.empty() ? string() : where + ": ")
+      + "the coefficients " + coeffsName + " of '" + key + " "
+      + (
+            tokens.size() && tokens.first().isWord()
+          ? tokens.first().wordToken() : word("<value>")
+        )
+      + " ...'"
+    );
+    if (tokens.empty() || !tokens.first().isWord())
+    {
+        // 'key <value>': a constant read from the line, keyCoeffs unread
+        FatalIOErrorInFunction(coeffs)
+            << "Sub-dictionary " << coeffsName << " in " << dict.name()
+            << " is not read: '" << key << "' is given as a value on its"
+            << " line (a constant); remove " << coeffsName << " ("
+            << context.c_str() << ")" << exit(FatalIOError);
+    }
+    const word type(tokens.first().wordToken());
+    const HashTable<wordList>& typeKeys = function1TypeKeywords();
+    if (!typeKeys.found(type) && !function1ReadsEntry(type))
+    {
+        // A type without coefficients (zero, one) or one this list does
+        // not know: left to OpenFOAM
+        return;
+    }
+    wordList valid;
+    if (function1ReadsEntry(type))
+    {
+        // Given keyCoeffs, OpenFOAM reads the whole entry again from it
+        // ('key type value;' inside keyCoeffs), not from the line
+        valid.append(key);
+        if (!coeffs.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Missing keyword '" << key << "' in " << coeffs.name()
+                << ": with " << coeffsName << " given, Function1 type "
+                << type << " reads '" << key << " " << type << " ...;'"
+                << " from it, not from the line in " << dict.name()
+                << "; remove " << coeffsName << " (" << context.c_str()
+                << ")" << exit(FatalIOError);
+        }
+    }
+    if (typeKeys.found(type))
+    {
+        valid.append(typeKeys[type]);
+    }
+    checkKeywords(coeffs, valid, context);
 }
 
 

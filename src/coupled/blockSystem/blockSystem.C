@@ -619,35 +619,74 @@ Foam::solverPerformance Foam::blockSystem::solve
             << source_.size() << abort(FatalError);
     }
 
+    // The floating-point traps that OpenFOAM sets (FOAM_SIGFPE) are held
+    // from here to the end of PETSc's solve. PETSc expects non-trapping
+    // arithmetic (it installs no trap itself unless asked, -fp_trap) and
+    // detects a failed factorisation after the fact (a zero pivot of a
+    // block, or an overflowing or NaN block: PetscKernel_A_gets_inverse_A_3
+    // of the block ILU overflowed, SIGFPE, before the traps were held),
+    // reporting it as KSP_DIVERGED_PC_FAILED or KSP_DIVERGED_NANORINF. The
+    // initial residual too: a right-hand side of 1e155 (a fixedPressure
+    // p_l of 1e160 Pa) overflowed its sum of squares, SIGFPE in this
+    // function, before the solve (coupledBlockSystem, section 4). The
+    // flags raised inside are discarded with the environment restored
+    // (fesetenv, not feupdateenv, which would raise them again under the
+    // traps); a non-finite right-hand side or solution is caught below
+    std::fenv_t fpEnv;
+    std::feholdexcept(&fpEnv);
+
+    // A right-hand side with a NaN or an infinity (on any rank): no
+    // system to solve (the solution is left as given)
+    bool finiteSource = true;
+    for (const scalar bi : source_)
+    {
+        if (!std::isfinite(bi))
+        {
+            finiteSource = false;
+            break;
+        }
+    }
+    reduce(finiteSource, andOp<bool>());
+
     // Initial residual |b - A x0|
     scalarField r;
     multiply(x, r);
     r = source_ - r;
     const scalar initialResidual = Foam::sqrt(gSumSqr(r));
 
-    PetscScalar* p;
-    petscSession::check(VecGetArray(b_, &p), "VecGetArray");
-    std::copy(source_.cbegin(), source_.cend(), p);
-    petscSession::check(VecRestoreArray(b_, &p), "VecRestoreArray");
-    petscSession::check(VecGetArray(x_, &p), "VecGetArray");
-    std::copy(x.cbegin(), x.cend(), p);
-    petscSession::check(VecRestoreArray(x_, &p), "VecRestoreArray");
+    PetscErrorCode ierr = 0;
+    if (finiteSource)
+    {
+        PetscScalar* p;
+        petscSession::check(VecGetArray(b_, &p), "VecGetArray");
+        std::copy(source_.cbegin(), source_.cend(), p);
+        petscSession::check(VecRestoreArray(b_, &p), "VecRestoreArray");
+        petscSession::check(VecGetArray(x_, &p), "VecGetArray");
+        std::copy(x.cbegin(), x.cend(), p);
+        petscSession::check(VecRestoreArray(x_, &p), "VecRestoreArray");
 
-    // PETSc's kernels run with the floating-point traps that OpenFOAM
-    // sets (FOAM_SIGFPE) held: PETSc expects non-trapping arithmetic (it
-    // installs no trap itself unless asked, -fp_trap) and detects a failed
-    // factorisation after the fact (a zero pivot of a block, or an
-    // overflowing or NaN block: PetscKernel_A_gets_inverse_A_3 of the
-    // block ILU overflowed, SIGFPE, before this), reporting it as
-    // KSP_DIVERGED_PC_FAILED or KSP_DIVERGED_NANORINF. The flags raised
-    // inside are discarded with the environment restored (fesetenv, not
-    // feupdateenv, which would raise them again under the traps); a
-    // non-finite solution is caught below
-    std::fenv_t fpEnv;
-    std::feholdexcept(&fpEnv);
-    const PetscErrorCode ierr = KSPSolve(ksp_, b_, x_);
+        ierr = KSPSolve(ksp_, b_, x_);
+    }
     std::fesetenv(&fpEnv);
     petscSession::check(ierr, "KSPSolve");
+
+    if (!finiteSource)
+    {
+        failure_ = "a non-finite right-hand side (NaN or infinity)";
+        const bool converged = false;
+        if (failOnDivergence)
+        {
+            FatalErrorInFunction
+                << "The block solver " << solverName_ << " (" << nBlock_
+                << " unknowns per cell, " << globalCells_.size()
+                << " cells): " << failure_.c_str() << exit(FatalError);
+        }
+        return solverPerformance
+        (
+            solverName_, "block", initialResidual, initialResidual, 0,
+            converged, true
+        );
+    }
 
     KSPConvergedReason reason;
     PetscInt nIter;

@@ -715,6 +715,8 @@ void Foam::pendularMedium::readSaturatedZone(const dictionary& liquidDict)
             checkedRead::closed(200, 700)
         ).value();
     saturatedZone_ = true;
+    // Its cells can turn liquid-only: a fixedPressure face above p_g too
+    liquidFlow_->allowPonding();
     Info<< "Saturated zone: Henry's law of the air, H^cp " << henryHcp_
         << " mol/(m3 Pa) at " << henryT0_ << " K, van 't Hoff "
         << henryVantHoff_ << " K; storage c_s " << storage_ << " 1/Pa"

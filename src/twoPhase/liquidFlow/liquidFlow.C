@@ -22,7 +22,37 @@ Foam::liquidFlow::patchTypeNames
 });
 
 
+// p_l's range (liquidFlow.H): from the Kelvin limit of an oven-dry soil
+// to the upper end of IAPWS-IF97's region 1 (the compressed liquid)
+const Foam::scalar Foam::liquidFlow::plMin_ = -1e9;
+const Foam::scalar Foam::liquidFlow::plMax_ = 1e8;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::liquidFlow::checkedPl
+(
+    const label patchi,
+    const scalar t
+) const
+{
+    const scalar pl = pl_[patchi].value(t);
+    // (isfinite first: an ordered comparison with a NaN would trap)
+    if (!std::isfinite(pl) || pl < plMin_ || pl > plMax_)
+    {
+        const dictionary& dict = plDict_[patchi];
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'pl' of the fixedPressure liquid boundary condition"
+            << " of patch '" << mesh_.boundaryMesh()[patchi].name()
+            << "' in " << dict.name() << ": p_l = " << pl << " Pa at time "
+            << t << " s is outside its valid range [" << Foam::name(plMin_)
+            << ", " << Foam::name(plMax_) << "] Pa (from the Kelvin limit of an oven-dry soil"
+            << " to the compressed liquid's range)" << exit(FatalIOError);
+    }
+    return pl;
+}
+
+
 
 void Foam::liquidFlow::readFixedPressure
 (
@@ -53,13 +83,11 @@ void Foam::liquidFlow::readFixedPressure
         wordList keys({"type"});
         keys.append(checkedRead::function1Keywords(pDict, "pl"));
         checkedRead::checkKeywords(pDict, keys, where);
+        checkedRead::checkFunction1Coeffs(pDict, "pl", where);
         pl_.set(patchi, Function1<scalar>::New("pl", pDict));
-        // Its value at the start: a finite pressure
-        checkedRead::check
-        (
-            pDict, "pl", pl_[patchi].value(mesh_.time().value()),
-            validRange{-GREAT, GREAT, false, false}
-        );
+        plDict_.set(patchi, new dictionary(pDict));
+        // Its value at the start (and at every evaluation: liquidPressure)
+        checkedPl(patchi, mesh_.time().value());
         return;
     }
     checkedRead::checkKeywords(pDict, {"type", "waterTable"}, where);
@@ -76,16 +104,7 @@ void Foam::liquidFlow::readFixedPressure
     (
         tDict, {"level", "pressure"}, where + ", its water table"
     );
-    level_[patchi] =
-        checkedRead::get
-        (
-            tDict, "level", dimLength, validRange{-GREAT, GREAT, false, false}
-        ).value();
-    pTable_[patchi] =
-        checkedRead::getOrDefault
-        (
-            tDict, "pressure", dimPressure, 101325, checkedRead::positive()
-        ).value();
+    plDict_.set(patchi, new dictionary(tDict));
     const scalar magG = mag(darcy_.g());
     if (magG <= 0)
     {
@@ -105,14 +124,57 @@ void Foam::liquidFlow::readFixedPressure
             minOp<scalar>()
         )
       + scalar(0);      // (-0 printed as 0)
+    const string levelRange
+    (
+        "valid range (-inf, " + Foam::name(zMin) + "] (at or below the"
+        " patch's lowest face, height " + Foam::name(zMin) + " m along -g:"
+        " a ponded face is beyond the saturation form)"
+    );
+    if (!tDict.found("level", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(tDict)
+            << "Missing keyword 'level' (the water table's height [m] along"
+            << " -g) of the water table of patch '" << pp.name() << "' in "
+            << tDict.name() << ": " << levelRange.c_str()
+            << exit(FatalIOError);
+    }
+    // (a finite number first: nan, inf, a word, wrong dimensions)
+    level_[patchi] =
+        checkedRead::get
+        (
+            tDict, "level", dimLength, validRange{-GREAT, GREAT, true, true}
+        ).value();
     if (level_[patchi] > zMin)
     {
         FatalIOErrorInFunction(tDict)
             << "Keyword 'level' = " << level_[patchi] << " m of the water"
             << " table of patch '" << pp.name() << "' in " << tDict.name()
-            << " is above its lowest face (height " << zMin << " m along"
-            << " -g): valid range (-inf, " << zMin << "] (a ponded face"
-            << " is beyond the saturation form)" << exit(FatalIOError);
+            << " is above its lowest face: " << levelRange.c_str()
+            << exit(FatalIOError);
+    }
+    // p_0: a gas pressure, within p_l's range (plMax_)
+    pTable_[patchi] =
+        checkedRead::getOrDefault
+        (
+            tDict, "pressure", dimPressure, 101325,
+            validRange{0, plMax_, true, false}
+        ).value();
+    // p_l,f on every face of the patch within p_l's range (the water
+    // table's p_l,f does not change in time: checked once)
+    forAll(Cf, i)
+    {
+        const scalar pl = liquidPressure(patchi, i);
+        if (pl < plMin_)
+        {
+            FatalIOErrorInFunction(tDict)
+                << "Keyword 'level' = " << level_[patchi] << " m of the"
+                << " water table of patch '" << pp.name() << "' in "
+                << tDict.name() << ": the liquid pressure of face " << i
+                << " (height " << -(darcy_.g() & Cf[i])/magG << " m), "
+                << pl << " Pa, is below p_l's valid range ["
+                << Foam::name(plMin_) << ", " << Foam::name(plMax_) << "] Pa: the water table is too deep"
+                << exit(FatalIOError);
+        }
     }
 }
 
@@ -238,6 +300,8 @@ Foam::liquidFlow::liquidFlow
     pl_(mesh.boundaryMesh().size()),
     level_(mesh.boundaryMesh().size(), Zero),
     pTable_(mesh.boundaryMesh().size(), Zero),
+    plDict_(mesh.boundaryMesh().size()),
+    ponding_(false),
     delta_(mesh.nBoundaryFaces(), Zero)
 {
     forAll(mesh.boundary(), patchi)
@@ -343,7 +407,7 @@ Foam::scalar Foam::liquidFlow::liquidPressure
 {
     if (pl_.set(patchi))
     {
-        return pl_[patchi].value(mesh_.time().value());
+        return checkedPl(patchi, mesh_.time().value());
     }
     // p_0 - rho_l |g| (z_f - z_wt), z = -g.x/|g|
     const vector& g = darcy_.g();
@@ -367,7 +431,27 @@ Foam::liquidDarcyFlux::liquidState Foam::liquidFlow::boundaryState
     {
         return state(pg, value_[patchi], T);
     }
-    const scalar pc = pg - liquidPressure(patchi, i);
+    const scalar pl = liquidPressure(patchi, i);
+    if (pl > pg && !ponding_)
+    {
+        // An over-pressured (ponded) face: its liquid would flood the
+        // cell beyond the saturation form's range (the Newton iterates
+        // then leave it, e.g. S <= S_wr, far from the cause)
+        const dictionary& dict = plDict_[patchi];
+        const label facei = mesh_.boundaryMesh()[patchi].start() + i;
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << (pl_.set(patchi) ? "pl" : "waterTable")
+            << "' of the fixedPressure liquid boundary condition of patch '"
+            << mesh_.boundaryMesh()[patchi].name() << "' in " << dict.name()
+            << ": p_l = " << pl << " Pa at time " << mesh_.time().value()
+            << " s is above the gas pressure p_g = " << pg << " Pa of its"
+            << " face " << i << " (cell " << mesh_.faceOwner()[facei]
+            << "): valid range [" << Foam::name(plMin_) << ", " << pg << "] Pa"
+            << " (p_l <= p_g of the face's cell: an over-pressured, ponded"
+            << " face is beyond the saturation form; pendularFoam's"
+            << " saturatedZone allows it)" << exit(FatalIOError);
+    }
+    const scalar pc = pg - pl;
     return
         liquidDarcyFlux::liquidState
         {

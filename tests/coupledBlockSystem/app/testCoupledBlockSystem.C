@@ -31,7 +31,9 @@ Description
        kept (a plausible wrong Jacobian) converges at first order only;
     4. a block preconditioner whose factorisation fails (a singular, an
        overflowing and a NaN 3x3 block, under OpenFOAM's floating-point
-       traps): the solve ends unconverged with the reason, no SIGFPE.
+       traps): the solve ends unconverged with the reason, no SIGFPE; a
+       right-hand side of 1e200 (its initial residual overflows) and a
+       NaN one: no signal, a breakdown reported (or x = b for 1e200).
 
     Writes blockU0..2 (1.) and newtonU0..2 (3.) for the serial = parallel
     comparison of the test script. Options: -diverge (the linear solve
@@ -407,6 +409,55 @@ void breakdownChecks(const fvMesh& mesh)
             perf.converged(), 0, "=="
         );
     }
+    // (d) the identity with a right-hand side of 1e200 in cell 0: its
+    // initial residual's sum of squares overflows (1e400), which raised
+    // SIGFPE in blockSystem::solve outside the held traps (a fixedPressure
+    // p_l of 1e160 Pa in pendularFoam); now held: the solve ends, x = b
+    // (a finite system), or a reported breakdown, never a signal. (e) a
+    // NaN in the right-hand side: a breakdown (no solve), named
+    {
+        assemble(nullptr);
+        if (Pstream::master())
+        {
+            sys.source()[0] = 1e200;
+        }
+        scalarField x(3*mesh.nCells(), Zero);
+        const solverPerformance perf = sys.solve(x, false);
+        Info<< "right-hand side 1e200: converged " << perf.converged()
+            << ", failure '" << sys.failure().c_str() << "', x_0 "
+            << (Pstream::master() ? x[0] : 0) << endl;
+        const scalar x0 =
+            returnReduce(Pstream::master() ? x[0] : 0, sumOp<scalar>());
+        checkTrue
+        (
+            "right-hand side 1e200: no signal, x = b or a breakdown",
+            (
+                perf.converged() && sys.failure().empty()
+             && mag(x0/1e200 - 1) < 1e-10
+            )
+         || (!perf.converged() && !sys.failure().empty()),
+            perf.converged(), 1, "=="
+        );
+    }
+    {
+        assemble(nullptr);
+        if (Pstream::master())
+        {
+            sys.source()[1] = std::numeric_limits<scalar>::quiet_NaN();
+        }
+        scalarField x(3*mesh.nCells(), Zero);
+        const solverPerformance perf = sys.solve(x, false);
+        Info<< "NaN right-hand side: " << sys.failure().c_str() << endl;
+        checkTrue
+        (
+            "NaN right-hand side: not converged, breakdown reported",
+            !perf.converged() && perf.singular()
+         && sys.failure().find("non-finite right-hand side")
+         != std::string::npos,
+            perf.converged(), 0, "=="
+        );
+    }
+
     assemble(nullptr);
     scalarField x(3*mesh.nCells(), Zero);
     const solverPerformance perf = sys.solve(x, false);
