@@ -83,7 +83,8 @@ newtonFloor = {
 }
 runs = ['cells_10', 'cells_20', 'cells_40', 'serialFixed_20',
         'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20',
-        'step1_20', 'step0.5_20', 'lowK_20', 'lowK_40', 'lowK_80']
+        'step1_20', 'step0.5_20', 'lowK_20', 'lowK_40', 'lowK_80',
+        'bubble_40']
 for run in runs:
     log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
     blocks = re.findall(
