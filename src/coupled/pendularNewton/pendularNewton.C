@@ -370,11 +370,12 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     const pendularMedium& medium = res.medium();
     const scalarField& phi = medium.porosity().primitiveField();
 
-    // Phase switching (saturatedZone): the cells switched at the last
-    // pass, the switches of each cell in this solve; a first pass on the
-    // first iterate
+    // Phase switching (saturatedZone): the cells whose criterion was
+    // violated at the last pass (switched, or held by the band: the band
+    // holds while they stay in it), the switches of each cell in this
+    // solve; a first pass on the first iterate
     const bool switching = medium.saturatedZone();
-    boolList switchedLast(nCells, false), switchedNow;
+    boolList heldLast(nCells, false), switchedNow, heldNow;
     labelList nSwitches(nCells, Zero);
     // (every rank calls it: collective)
     auto switchPass = [&]()
@@ -382,7 +383,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         label nSwitched =
             res.switchPhases
             (
-                x, switchedLast, switchedNow, gasSeed_, hysteresis_
+                x, heldLast, switchedNow, heldNow, gasSeed_, hysteresis_
             );
         label nOscillating = 0;
         forAll(switchedNow, c)
@@ -392,7 +393,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 ++nOscillating;
             }
         }
-        switchedLast = switchedNow;
+        heldLast = heldNow;
         reduce(nSwitched, sumOp<label>());
         reduce(nOscillating, sumOp<label>());
         if (nOscillating > 0)

@@ -224,8 +224,9 @@ bool Foam::pendularResidual::phaseConsistent
 Foam::label Foam::pendularResidual::switchPhases
 (
     scalarField& x,
-    const boolList& switchedBefore,
+    const boolList& heldBefore,
     boolList& switched,
+    boolList& held,
     const scalar gasSeed,
     const bool hysteresis
 )
@@ -233,24 +234,30 @@ Foam::label Foam::pendularResidual::switchPhases
     const label n = fvMesh_.nCells();
     switched.setSize(n);
     switched = false;
+    held.setSize(n);
+    held = false;
     labelList phases(phase_);
     label nSwitched = 0;
     const scalar rhoL = medium_.rhoL();
+    // The band h_p, relative to the pressure (see the header: above the
+    // straddle measured at the bubble point, 31 Pa at 1 atm)
+    const scalar hp = 1e-3;
     for (label c = 0; c < n && medium_.saturatedZone(); ++c)
     {
         scalar* xc = &x[3*c];
         const scalar phi = medium_.porosity()[c];
         const scalar T = xc[0];
-        const bool wide = hysteresis && switchedBefore[c];
+        const bool wide = hysteresis && heldBefore[c];
         const scalar pw1 = medium_.saturatedVapourPressure(T);
         const scalar pc1 = medium_.pcSaturated(T);
         if (phase_[c] == bothPhases)
         {
             const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
             const scalar S = (xc[2]/phi - rhoW1)/(rhoL - rhoW1);
-            if (S >= 1 + (wide ? 0.01 : 0))
+            const scalar pg = xc[1] + pRef_;
+            held[c] = S >= 1;
+            if (S >= 1 + (wide ? medium_.storage()*hp*mag(pg) : 0))
             {
-                const scalar pg = xc[1] + pRef_;
                 xc[1] = pg - pc1 - pRef_;
                 xc[2] = medium_.dissolvedAir(max(pg - pw1, scalar(0)), T);
                 phases[c] = liquidOnly;
@@ -261,12 +268,9 @@ Foam::label Foam::pendularResidual::switchPhases
         else
         {
             const scalar pn = xc[1] + pRef_ + pc1;
-            if
-            (
-                pn <= 0
-             || pw1 + medium_.airPressure(xc[2], T)
-              > (1 + (wide ? 0.02 : 0))*pn
-            )
+            const scalar pBubble = pw1 + medium_.airPressure(xc[2], T);
+            held[c] = pn <= 0 || pBubble > pn;
+            if (pn <= 0 || pBubble > (1 + (wide ? hp : 0))*pn)
             {
                 const scalar alpha = 1 - gasSeed;
                 xc[2] = medium_.waterContent(alpha, T, phi);
