@@ -120,9 +120,12 @@ check(len(airOut) == 3 and min(airOut) > 0,
       'outflow_20: dissolved air out through bottom %s kg (in the balances'
       ' checked above)' % airOut)
 
-# 2. Refinement: T(2 cm, 400 s) and T(1 cm, 600 s) converge (checked).
-# The gas front, the water lost, T(1 cm, 400 s) and T(2 cm, 600 s) do not
-# on 10-40 cells, and cannot: the top is open (p_w of dry air) and held at
+# 2. Refinement: nothing here converges, printed only. T(2 cm, 400 s) and
+# T(1 cm, 600 s) change less and less on 10, 20, 40 cells (1.21 then
+# 0.075 K, 11 then 0.05 K), but on 80 cells (bench/pendularSaturatedFine,
+# 136 s) they move by 0.57 and 33.5 K: apparent, not converged. The gas
+# front, the water lost, T(1 cm, 400 s) and T(2 cm, 600 s) do not either,
+# and cannot: the top is open (p_w of dry air) and held at
 # the wall's T, the liquid drawn up to it by capillarity (K = 1e-11 m2)
 # keeps the top cell wet and boiling at ~373 K whatever its size, so the
 # wall's heat reaches the evaporation across half a top cell, lambda (T_w
@@ -134,7 +137,7 @@ check(len(airOut) == 3 and min(airOut) > 0,
 # converged): the top cell within 1 K of boiling at 1 atm at 600 s, and
 # the water out through the top at 600 s more than doubled at each halving
 # (a converging quantity changes less and less: ratio -> 1)
-converging = ('T(2 cm, 400 s) [K]', 'T(1 cm, 600 s) [K]')
+converging = ()    # see above: none on this case
 q = {n: quantities('cells_%d' % n) for n in (10, 20, 40)}
 meshError = {}
 for k in q[10]:
@@ -197,11 +200,11 @@ check(wt < 0.5, 'steps 2 -> 0.5 K on 20 cells: T at 1, 2 cm, 400, 600 s'
 # 2b. The same column with the liquid's permeability 1e-14 m2: the
 # capillary supply falls short of the evaporation, the top dries and the
 # front recedes from it, a dry zone the meshes resolve: the front (alpha_l
-# = 0.999) at 400 and 600 s and T at 1 and 2 cm converge on 20, 40,
-# 80 cells (10 cells: too coarse, the gas still in the top cell alone at
+# = 0.999) at 400 and 600 s and T at 1 and 2 cm (but T(2 cm, 600 s))
+# converge on 20, 40, 80 cells (10 cells: too coarse, the gas still in the top cell alone at
 # 400 s): each change smaller than the previous, the observed order
 # printed. Measured: the 0.999 front at 600 s 26.66, 28.11, 28.20 mm
-# (changes 1.45, 0.089 mm); T(2 cm, 600 s) barely (0.713, 0.711 K); the
+# (changes 1.45, 0.089 mm); T(2 cm, 600 s) not (0.713, 0.711 K); the
 # water out through the top at 400 s does not (0.15, 0.64, 1.22 kg/m2 on
 # 20-80 cells: the top cell still wet and boiling then, as above), nor
 # the front at alpha_l = 0.9 at 600 s (14.05, 13.90, 13.03 mm), printed
@@ -211,15 +214,23 @@ def lowK(run):
     return r
 
 
+# Converging means each change at most 0.8 of the previous (an observed
+# order of at least 0.32: a change equal to the previous one, within the
+# round-off of the runs' step sequences, is no evidence). T(2 cm, 600 s)
+# is not: changes 0.713 then 0.711 K (printed only)
 lk = {n: lowK('lowK_%d' % n) for n in (20, 40, 80)}
 for k in lk[20]:
     d1 = lk[40][k] - lk[20][k]
     d2 = lk[80][k] - lk[40][k]
     order = math.log2(abs(d1/d2)) if d2 != 0 and d1 != 0 else float('nan')
-    check(abs(d2) < abs(d1),
-          'K 1e-14: %s: %.6g, %.6g, %.6g on 20, 40, 80 cells (changes %.3g,'
-          ' %.3g: observed order %.2f)' % (k, lk[20][k], lk[40][k], lk[80][k],
-                                           d1, d2, order))
+    text = ('K 1e-14: %s: %.6g, %.6g, %.6g on 20, 40, 80 cells (changes'
+            ' %.3g, %.3g: observed order %.2f)'
+            % (k, lk[20][k], lk[40][k], lk[80][k], d1, d2, order))
+    if k == 'T(2 cm, 600 s) [K]':
+        print('  (printed, not converged) ' + text)
+    else:
+        check(abs(d2) <= 0.8*abs(d1), text + ', each change <= 0.8 of the'
+              ' previous required')
 print('  (printed, not converged) K 1e-14: front at alpha_l = 0.9 at 600 s'
       ' %.4g, %.4g, %.4g mm on 20, 40, 80 cells'
       % tuple(1e3*front('lowK_%d' % n, '600', 0.9) for n in (20, 40, 80)))
