@@ -4,6 +4,8 @@
 
 #include "pendularNewton.H"
 #include "emptyPolyPatch.H"
+#include "OSspecific.H"
+#include <cmath>
 #include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -29,13 +31,62 @@ Foam::pendularNewton::pendularNewton
     maxIter_(maxIter),
     gasSeed_(1e-4),
     hysteresis_(true),
-    verbose_(verbose)
-{}
+    verbose_(verbose),
+    nanAt_(0),
+    nResiduals_(0)
+{
+    // The test-only NaN injection (off unless set; read once)
+    const std::string nanAt = getEnv("HEARTHFOAM_NEWTON_NAN");
+    if (!nanAt.empty() && !(readLabel(nanAt, nanAt_) && nanAt_ != 0))
+    {
+        FatalErrorInFunction
+            << "Environment variable HEARTHFOAM_NEWTON_NAN = '"
+            << nanAt.c_str() << "': expected a non-zero integer k (the"
+            << " master's first cell's water residual set to NaN at the"
+            << " k-th residual evaluation; -k: at every one from the k-th)"
+            << " or unset" << exit(FatalError);
+    }
+    if (nanAt_ != 0)
+    {
+        Info<< "pendularNewton: HEARTHFOAM_NEWTON_NAN = " << nanAt_
+            << ": the water residual of the first cell (master) is set to"
+            << " NaN at residual evaluation " << mag(nanAt_)
+            << (nanAt_ < 0 ? " and every later one" : " only")
+            << " (test only)" << endl;
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::pendularNewton::solveCellWater
+Foam::label Foam::pendularNewton::nonFiniteCells
+(
+    const scalarField& R,
+    const scalarField& sW,
+    const scalarField& sG,
+    const scalarField& sE
+)
+{
+    // (std::isfinite classifies without an ordered comparison: no trap)
+    label n = 0;
+    forAll(sW, c)
+    {
+        if
+        (
+            !std::isfinite(R[3*c]) || !std::isfinite(R[3*c + 1])
+         || !std::isfinite(R[3*c + 2]) || !std::isfinite(sW[c])
+         || !std::isfinite(sG[c]) || !std::isfinite(sE[c])
+        )
+        {
+            ++n;
+        }
+    }
+    reduce(n, sumOp<label>());
+    return n;
+}
+
+
+Foam::label Foam::pendularNewton::solveCellWater
 (
     const pendularResidual& res,
     const label c,
@@ -49,18 +100,25 @@ bool Foam::pendularNewton::solveCellWater
     // nearly empty cell, up by doubling), then Illinois regula falsi
     // (Dahlquist and Bjorck, 2008, Numerical Methods in Scientific
     // Computing I, ch. 6)
+    // A non-finite g (a closure out of its range): x unchanged, -1
     scalar Rc[3];
+    bool finite = true;
     auto g = [&](const scalar W)
     {
         x[3*c + 2] = W;
         res.cellResidual(c, x, xNbr, Rc);
+        finite = finite && std::isfinite(Rc[0]);
         return Rc[0];
     };
     const scalar W0 = x[3*c + 2];
     const scalar g0 = g(W0);
+    if (!finite)
+    {
+        return -1;
+    }
     if (mag(g0) < tol)
     {
-        return false;
+        return 0;
     }
     scalar a = W0, b = W0, ga = g0, gb = g0;
     if (g0 > 0)
@@ -70,16 +128,21 @@ bool Foam::pendularNewton::solveCellWater
     }
     else
     {
-        for (label k = 0; k < 30 && gb <= 0; ++k)
+        for (label k = 0; k < 30 && finite && gb <= 0; ++k)
         {
             b *= 2;
             gb = g(b);
         }
     }
+    if (!finite)
+    {
+        x[3*c + 2] = W0;
+        return -1;
+    }
     if (!(ga < 0 && gb > 0))
     {
         x[3*c + 2] = W0;
-        return false;
+        return 0;
     }
     label side = 0;
     scalar W = W0;
@@ -87,6 +150,11 @@ bool Foam::pendularNewton::solveCellWater
     {
         W = (a*gb - b*ga)/(gb - ga);
         const scalar gW = g(W);
+        if (!finite)
+        {
+            x[3*c + 2] = W0;
+            return -1;
+        }
         if (mag(gW) < tol || b - a < 1e-12*b)
         {
             break;
@@ -113,7 +181,7 @@ bool Foam::pendularNewton::solveCellWater
         }
     }
     x[3*c + 2] = W;
-    return true;
+    return 1;
 }
 
 
@@ -121,7 +189,8 @@ Foam::label Foam::pendularNewton::localWaterSolves
 (
     const pendularResidual& res,
     scalarField& x,
-    const scalarField& sW
+    const scalarField& sW,
+    label& nNonFinite
 ) const
 {
     const pendularMedium& medium = res.medium();
@@ -129,6 +198,7 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const tmp<scalarField> txNbr = res.neighbourStates(x);
     const labelList& phase = res.phases();
     label nLocal = 0;
+    nNonFinite = 0;
     for (label c = 0; c < x.size()/3; ++c)
     {
         const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
@@ -136,13 +206,22 @@ Foam::label Foam::pendularNewton::localWaterSolves
         (
             phase[c] == pendularResidual::bothPhases
          && Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
-         && solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr())
         )
         {
-            ++nLocal;
+            const label solved =
+                solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr());
+            if (solved > 0)
+            {
+                ++nLocal;
+            }
+            else if (solved < 0)
+            {
+                ++nNonFinite;
+            }
         }
     }
     reduce(nLocal, sumOp<label>());
+    reduce(nNonFinite, sumOp<label>());
     return nLocal;
 }
 
@@ -252,9 +331,11 @@ bool Foam::pendularNewton::valid
         const scalar T = x[3*c];
         const scalar p = x[3*c + 1] + pRef;
         const scalar W = x[3*c + 2];
-        // (liquidOnly: p_l finite, tension allowed; X >= 0)
+        // (liquidOnly: p_l finite, tension allowed; X >= 0; a NaN tested
+        // first: an ordered comparison with it traps under FOAM_SIGFPE)
         ok =
-            T >= TLow && T < GREAT
+            std::isfinite(T) && std::isfinite(p) && std::isfinite(W)
+         && T >= TLow && T < GREAT
          && (phase[c] == pendularResidual::liquidOnly ? p > -GREAT : p > 0)
          && p < GREAT
          && W >= 0 && W < GREAT;
@@ -436,9 +517,37 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // no CPU saving measurable on a loaded machine, 2.24 s and 2.35 s;
         // the states of the cells at x are cached for it)
         res.residual(x, R);
+        if
+        (
+            nanAt_ != 0 && Pstream::master()
+         && (++nResiduals_ == nanAt_ || (nanAt_ < 0 && nResiduals_ >= -nanAt_))
+        )
+        {
+            R[0] = std::numeric_limits<scalar>::quiet_NaN();
+        }
 
         // Residuals in units of the tolerances through the storage
         res.scales(x, sW, sG, sE);
+
+        // A NaN or an infinity in a residual or a scale (a closure out of
+        // its range, an overflow): a failed iteration, before any
+        // comparison (which would trap under FOAM_SIGFPE); the sub-step
+        // ends unconverged at the last iterate, to be retried shorter
+        const label nNonFinite = nonFiniteCells(R, sW, sG, sE);
+        if (nNonFinite > 0)
+        {
+            out.failure =
+                "a non-finite residual (NaN or infinity) in "
+              + Foam::name(nNonFinite) + " cell(s) at Newton iteration "
+              + Foam::name(iter);
+            out.iterations = iter;
+            if (verbose_)
+            {
+                Info<< "    Newton " << iter << ": " << out.failure.c_str()
+                    << endl;
+            }
+            return out;
+        }
         FixedList<scalar, 3> r(scalar(0));
         for (label c = 0; c < nCells; ++c)
         {
@@ -685,7 +794,18 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances
-        nProjected += localWaterSolves(res, x, sW);
+        label nLocalNonFinite = 0;
+        nProjected += localWaterSolves(res, x, sW, nLocalNonFinite);
+        if (nLocalNonFinite > 0)
+        {
+            out.failure =
+                "a non-finite water residual (NaN or infinity) in the local"
+                " water solve of " + Foam::name(nLocalNonFinite)
+              + " cell(s) at Newton iteration " + Foam::name(iter);
+            out.iterations = iter + 1;
+            out.valid = valid(res, x, pRef);
+            return out;
+        }
 
         // The phase states from the new iterate: a switch is not a
         // converged iteration

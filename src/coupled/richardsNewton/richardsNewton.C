@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "richardsNewton.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -45,6 +46,19 @@ Foam::richardsNewton::result Foam::richardsNewton::solve
     for (label iter = 0; ; ++iter)
     {
         res.residual(S, R);
+        // A NaN or an infinity in a residual (on any rank): unconverged,
+        // before any comparison (which would trap under FOAM_SIGFPE)
+        bool finite = true;
+        forAll(R, c)
+        {
+            finite = finite && std::isfinite(R[c]);
+        }
+        reduce(finite, andOp<bool>());
+        if (!finite)
+        {
+            out.iterations = iter;
+            return out;
+        }
         scalar r = 0;
         forAll(R, c)
         {
