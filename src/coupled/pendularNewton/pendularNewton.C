@@ -67,7 +67,9 @@ Foam::label Foam::pendularNewton::nonFiniteCells
     const scalarField& sE
 )
 {
-    // (std::isfinite classifies without an ordered comparison: no trap)
+    // (std::isfinite classifies without an ordered comparison: no trap;
+    // a zero scale, e.g. the gas's in a cell whose pores the iterate fills
+    // with liquid, would divide by zero, a trap too)
     label n = 0;
     forAll(sW, c)
     {
@@ -76,6 +78,7 @@ Foam::label Foam::pendularNewton::nonFiniteCells
             !std::isfinite(R[3*c]) || !std::isfinite(R[3*c + 1])
          || !std::isfinite(R[3*c + 2]) || !std::isfinite(sW[c])
          || !std::isfinite(sG[c]) || !std::isfinite(sE[c])
+         || sW[c] == 0 || sG[c] == 0 || sE[c] == 0
         )
         {
             ++n;
@@ -530,14 +533,15 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         res.scales(x, sW, sG, sE);
 
         // A NaN or an infinity in a residual or a scale (a closure out of
-        // its range, an overflow): a failed iteration, before any
-        // comparison (which would trap under FOAM_SIGFPE); the sub-step
-        // ends unconverged at the last iterate, to be retried shorter
+        // its range, an overflow), or a zero scale: a failed iteration,
+        // before any comparison (which would trap under FOAM_SIGFPE); the
+        // sub-step ends unconverged at the last iterate, to be retried
+        // shorter
         const label nNonFinite = nonFiniteCells(R, sW, sG, sE);
         if (nNonFinite > 0)
         {
             out.failure =
-                "a non-finite residual (NaN or infinity) in "
+                "a non-finite residual (NaN or infinity) or a zero scale in "
               + Foam::name(nNonFinite) + " cell(s) at Newton iteration "
               + Foam::name(iter);
             out.iterations = iter;
