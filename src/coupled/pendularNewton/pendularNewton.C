@@ -457,9 +457,16 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     // Phase switching (saturatedZone): the cells whose criterion was
     // violated at the last pass (switched, or held by the band: the band
     // holds while they stay in it), the switches of each cell in this
-    // solve; a first pass on the first iterate
+    // solve; a first pass on the first iterate, with the band for every
+    // cell: the first iterate is the last accepted sub-step's state, in
+    // which a cell held by the band at its last pass stays held (a
+    // converged solve ends with a pass that switched nothing: each cell
+    // consistent, or inside its band). Without it such a cell was switched
+    // at the first pass of the next sub-step, across the band, and
+    // oscillated (issue 14: the bubble-point start on 80 cells of
+    // bench/pendularSaturatedFine)
     const bool switching = medium.saturatedZone();
-    boolList heldLast(nCells, false), switchedNow, heldNow;
+    boolList heldLast(nCells, true), switchedNow, heldNow;
     labelList nSwitches(nCells, Zero);
     // (every rank calls it: collective)
     auto switchPass = [&]()
