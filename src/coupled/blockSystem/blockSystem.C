@@ -447,6 +447,29 @@ void Foam::blockSystem::addBlocks
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Every value finite (no NaN, no infinity) on every rank; a
+    //  collective call every rank makes
+    bool allFinite(const Foam::UList<Foam::scalar>& values)
+    {
+        bool finite = true;
+        for (const Foam::scalar v : values)
+        {
+            if (!std::isfinite(v))
+            {
+                finite = false;
+                break;
+            }
+        }
+        Foam::reduce(finite, Foam::andOp<bool>());
+        return finite;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::blockSystem::blockSystem
@@ -637,16 +660,7 @@ Foam::solverPerformance Foam::blockSystem::solve
 
     // A right-hand side with a NaN or an infinity (on any rank): no
     // system to solve (the solution is left as given)
-    bool finiteSource = true;
-    for (const scalar bi : source_)
-    {
-        if (!std::isfinite(bi))
-        {
-            finiteSource = false;
-            break;
-        }
-    }
-    reduce(finiteSource, andOp<bool>());
+    const bool finiteSource = allFinite(source_);
 
     // Initial residual |b - A x0|
     scalarField r;
@@ -710,16 +724,7 @@ Foam::solverPerformance Foam::blockSystem::solve
 
     // A solution with a NaN or an infinity (on any rank) is no solution,
     // whatever PETSc's reason
-    bool finite = true;
-    for (const scalar xi : x)
-    {
-        if (!std::isfinite(xi))
-        {
-            finite = false;
-            break;
-        }
-    }
-    reduce(finite, andOp<bool>());
+    const bool finite = allFinite(x);
 
     const char* reasonText = nullptr;
     KSPGetConvergedReasonString(ksp_, &reasonText);
