@@ -491,8 +491,8 @@ Foam::blockSystem::blockSystem
     ksp_(nullptr),
     solverName_(),
     prefix_(),
-    failure_(),
-    faceValues_(4*nBlock*nBlock)
+    faceValues_(4*nBlock*nBlock),
+    failure_()
 {
     petscSession::checkActive("blockSystem");
     if (nBlock < 1)
