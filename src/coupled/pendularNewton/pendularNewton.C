@@ -4,7 +4,6 @@
 
 #include "pendularNewton.H"
 #include "emptyPolyPatch.H"
-#include "OSspecific.H"
 #include <cmath>
 #include <limits>
 
@@ -32,28 +31,23 @@ Foam::pendularNewton::pendularNewton
     gasSeed_(1e-4),
     hysteresis_(true),
     verbose_(verbose),
-    nanAt_(0),
-    nResiduals_(0)
+    nanResidual_
+    (
+        "pendularNewtonNaN", nanInjection::pendularNewtonResidual
+    ),
+    nanLocalWater_
+    (
+        "pendularNewtonLocalWaterNaN", nanInjection::pendularNewtonLocalWater
+    )
 {
-    // The test-only NaN injection (off unless set; read once)
-    const std::string nanAt = getEnv("HEARTHFOAM_NEWTON_NAN");
-    if (!nanAt.empty() && !(readLabel(nanAt, nanAt_) && nanAt_ != 0))
-    {
-        FatalErrorInFunction
-            << "Environment variable HEARTHFOAM_NEWTON_NAN = '"
-            << nanAt.c_str() << "': expected a non-zero integer k (the"
-            << " master's first cell's water residual set to NaN at the"
-            << " k-th residual evaluation; -k: at every one from the k-th)"
-            << " or unset" << exit(FatalError);
-    }
-    if (nanAt_ != 0)
-    {
-        Info<< "pendularNewton: HEARTHFOAM_NEWTON_NAN = " << nanAt_
-            << ": the water residual of the first cell (master) is set to"
-            << " NaN at residual evaluation " << mag(nanAt_)
-            << (nanAt_ < 0 ? " and every later one" : " only")
-            << " (test only)" << endl;
-    }
+    nanResidual_.report
+    (
+        "pendularNewton: the water residual of the first cell (master)"
+    );
+    nanLocalWater_.report
+    (
+        "pendularNewton: the water residual of a local water solve (master)"
+    );
 }
 
 
@@ -110,6 +104,10 @@ Foam::label Foam::pendularNewton::solveCellWater
     {
         x[3*c + 2] = W;
         res.cellResidual(c, x, xNbr, Rc);
+        if (nanLocalWater_.fire())
+        {
+            Rc[0] = std::numeric_limits<scalar>::quiet_NaN();
+        }
         finite = finite && std::isfinite(Rc[0]);
         return Rc[0];
     };
@@ -527,11 +525,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // no CPU saving measurable on a loaded machine, 2.24 s and 2.35 s;
         // the states of the cells at x are cached for it)
         res.residual(x, R);
-        if
-        (
-            nanAt_ != 0 && Pstream::master()
-         && (++nResiduals_ == nanAt_ || (nanAt_ < 0 && nResiduals_ >= -nanAt_))
-        )
+        if (nanResidual_.fire() && R.size())
         {
             R[0] = std::numeric_limits<scalar>::quiet_NaN();
         }
