@@ -38,7 +38,8 @@ Foam::pendularNewton::pendularNewton
     nanLocalWater_
     (
         "pendularNewtonLocalWaterNaN", nanInjection::pendularNewtonLocalWater
-    )
+    ),
+    linearHinted_(false)
 {
     nanResidual_.report
     (
@@ -517,6 +518,8 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     scalar rFirst = GREAT;
     // The last iterate's (stall test)
     scalar rPrev = 0;
+    // Linear solves stopped short of their tolerance in this solve
+    label nShort = 0;
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
@@ -725,6 +728,26 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             Info<< "    Newton " << iter << ": linear solver stopped at "
                 << perf.finalResidual() << " after " << perf.nIterations()
                 << " iterations" << endl;
+        }
+        // Newton slowed by inexact steps: said once (the solve's outcome,
+        // the same on every rank)
+        nShort += !perf.converged();
+        if
+        (
+            !linearHinted_ && iter + 1 >= slowIterations_
+         && 2*nShort > iter + 1
+        )
+        {
+            linearHinted_ = true;
+            Info<< "pendularNewton: " << nShort << " of " << iter + 1
+                << " linear solves of this sub-step's Newton steps stopped"
+                << " short of their tolerance (the last at "
+                << perf.finalResidual() << " after " << perf.nIterations()
+                << " iterations): inexact steps slow Newton down. Set a"
+                << " stronger preconditioner in system/fvSolution, e.g."
+                << " coupled { preconditioner lu; } (MUMPS on a decomposed"
+                << " mesh, where block Jacobi loses the coupling across"
+                << " the processor boundaries); said once" << endl;
         }
 
         FixedList<scalar, 3> u(scalar(0));
