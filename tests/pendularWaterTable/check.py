@@ -48,6 +48,30 @@ Heights z are from the bottom face (at y = 1 m).
     2.4e-6 on 200, where the Newton tolerances take over; the 100- and
     200-cell runs cost 25286 and 109001 iterations, not in the suite).
 
+(f) ponding, the saturated zone (ponding/: 5 cm, 10 cells, K = 1e-11 m2,
+    mu_l = 1e-3 Pa s, 20 C): a saturated column (liquid-only cells) under
+    h = 3 cm of ponded water (the top's p_l,f = p_atm + rho_l g h, above
+    the face's p_g), drained freely at the bottom (p_l,f = p_atm). Steady,
+    the potential p_l + rho_l g y is linear between the faces, which
+    two-point finite volumes reproduce exactly: the flow per area is
+        q = rho_l K rho_l g (h + L)/(mu_l L) = 0.15696 kg/m2/s,
+    its transient (the storage c_s = 4.5e-10 1/Pa: the column's pressure
+    diffusivity K/(mu_l phi c_s) = 85 m2/s; the dissolved air front, the
+    pond's Henry air pushed in, through the column in L phi/(q/rho_l) =
+    83 s) over by 300 s: the top's and the bottom's flows over 300-400 s
+    within 1e-6 of q A (100 s) (the Newton tolerance pTol 1e-4 Pa of
+    the 785 Pa potential drop is 1.3e-7);
+(g) ponded filling: the same column from alpha_l = 0.5 (two-phase, gas
+    open at the top), K = 1e-12 m2, the bottom impermeable: the water
+    gained between the first write (25 s) and each later one, sum (W -
+    W_25) V from the written W, equals the inflow through the top the log
+    prints over that time (1e-10 of the water gained, the balances'
+    class); a write holds both phase states (the column fills from the
+    top, the cells switch to liquid-only); at 250 s every cell liquid-only
+    and p_l hydrostatic under the pond, p_atm + rho_l g (h - y_c) (y_c <
+    0 the cell centre; two-point finite volumes exact), within 1e-3 Pa (10
+    pTol; written to 10 digits, 1e-4 Pa).
+
 check.py gardnerInitial N PATH  the exact Gardner S (S_b = 0.1) at N cells
 check.py check SCRATCH          the comparisons
 """
@@ -128,6 +152,96 @@ def last_water_stored_change(log):
             if m and water:
                 stored = float(m.group(1))
     return stored
+
+
+def water_flows(log):
+    """{t: {patch: water out through it since the start [kg]}} of every
+    water balance of the log."""
+    flows, t = {}, None
+    with open(log) as f:
+        for line in f:
+            m = re.match(r'^Water balance at t = (\S+) s', line)
+            if m:
+                t = float(m.group(1))
+                flows[t] = {}
+                continue
+            if re.match(r'^\S', line):
+                t = None
+            m = re.search(r'out through (\S+) = (\S+)', line)
+            if m and t is not None:
+                flows[t][m.group(1)] = float(m.group(2))
+    return flows
+
+
+def field_at(case, time, name):
+    """The internal field name of case at a written time (list)."""
+    dirs = [d for d in os.listdir(case)
+            if re.match(r'^[0-9.e+]+$', d) and abs(float(d) - time) < 1e-9]
+    with open(os.path.join(case, dirs[0], name)) as f:
+        text = f.read()
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*'
+                  r'\(([^)]*)\)', text)
+    if m:
+        return [float(v) for v in m.group(2).split()]
+    m = re.search(r'internalField\s+uniform\s+(\S+);', text)
+    return [float(m.group(1))]*PONDED_N
+
+
+# (f), (g): the ponded column
+PONDED_N, PONDED_L, PONDED_H = 10, 0.05, 0.03
+PONDED_AREA = 1e-4
+P_POND = P0 + RHO*G*PONDED_H
+
+
+def check_ponding(c, scratch):
+    """(f) and (g); returns the cases (for the balances)."""
+    # (f) the steady flow through the saturated column
+    case = os.path.join(scratch, 'pondedFlow')
+    flows = water_flows(os.path.join(case, 'log.pendularFoam'))
+    q = RHO*1e-11*RHO*G*(PONDED_H + PONDED_L)/(1e-3*PONDED_L)
+    exact = q*PONDED_AREA*100
+    top = -(flows[400]['top'] - flows[300]['top'])
+    bottom = flows[400]['bottom'] - flows[300]['bottom']
+    print('pondedFlow: 300-400 s in through top %.12g kg, out through bottom'
+          ' %.12g kg, Darcy q A dt %.12g kg' % (top, bottom, exact))
+    c.le('pondedFlow: |inflow (top) - Darcy| / Darcy, 300-400 s',
+         abs(top - exact)/exact, 1e-6)
+    c.le('pondedFlow: |outflow (bottom) - Darcy| / Darcy, 300-400 s',
+         abs(bottom - exact)/exact, 1e-6)
+    gas = field_at(case, 400, 'gasPresent')
+    c.true('pondedFlow: every cell liquid-only at 400 s', max(gas) == 0,
+           '%d of %d' % (sum(g == 0 for g in gas), PONDED_N))
+
+    # (g) the ponded filling
+    fill = os.path.join(scratch, 'pondedFill')
+    flows = water_flows(os.path.join(fill, 'log.pendularFoam'))
+    times = sorted(flows)
+    volume = PONDED_AREA*PONDED_L/PONDED_N
+    w0 = field_at(fill, times[0], 'W')
+    gained = [sum(w - v for w, v in zip(field_at(fill, t, 'W'), w0))*volume
+              for t in times]
+    inflow = [-(flows[t]['top'] - flows[times[0]]['top']) for t in times]
+    err = max(abs(g - i) for g, i in zip(gained, inflow))/max(gained)
+    print('pondedFill: water gained %.6g kg from %g to %g s (inflow %.6g)'
+          % (gained[-1], times[0], times[-1], inflow[-1]))
+    c.true('pondedFill: writes at 25 to 250 s', len(times) == 10,
+           '%s' % times)
+    c.le('pondedFill: max |water gained (W fields) - inflow (log)| /'
+         ' water gained', err, 1e-10)
+    liquidOnly = [sum(g == 0 for g in field_at(fill, t, 'gasPresent'))
+                  for t in times]
+    print('pondedFill: liquid-only cells at each write %s' % liquidOnly)
+    c.true('pondedFill: a write with both phase states',
+           any(0 < n < PONDED_N for n in liquidOnly), '%s' % liquidOnly)
+    c.true('pondedFill: every cell liquid-only at 250 s',
+           liquidOnly[-1] == PONDED_N)
+    pl = field_at(fill, times[-1], 'pl')
+    dz = PONDED_L/PONDED_N
+    hydro = [P_POND - RHO*G*(-PONDED_L + (i + 0.5)*dz)
+             for i in range(PONDED_N)]
+    c.le('pondedFill: max |p_l - hydrostatic under the pond| at 250 s [Pa]',
+         max(abs(a - b) for a, b in zip(pl, hydro)), 1e-3)
+    return [case, fill]
 
 
 def gardner_initial(n, path):
@@ -235,6 +349,9 @@ def check(scratch):
     c.le('infiltration: |S(mid-column) - S_q| / S_q (gravity-drained)',
          abs(mid - sq)/sq, 1e-4)
     logs.append(case)
+
+    # (f), (g) ponding
+    logs += check_ponding(c, scratch)
 
     # (c) balances
     for case in logs + [os.path.join(scratch, 'hydrostatic_parallel'),

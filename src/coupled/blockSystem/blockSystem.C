@@ -447,26 +447,21 @@ void Foam::blockSystem::addBlocks
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Static Functions * * * * * * * * * * * * //
 
-namespace
+bool Foam::blockSystem::allFinite(const UList<scalar>& values)
 {
-    //- Every value finite (no NaN, no infinity) on every rank; a
-    //  collective call every rank makes
-    bool allFinite(const Foam::UList<Foam::scalar>& values)
+    bool finite = true;
+    for (const scalar v : values)
     {
-        bool finite = true;
-        for (const Foam::scalar v : values)
+        if (!std::isfinite(v))
         {
-            if (!std::isfinite(v))
-            {
-                finite = false;
-                break;
-            }
+            finite = false;
+            break;
         }
-        Foam::reduce(finite, Foam::andOp<bool>());
-        return finite;
     }
+    reduce(finite, andOp<bool>());
+    return finite;
 }
 
 

@@ -4,7 +4,6 @@
 
 #include "pendularNewton.H"
 #include "emptyPolyPatch.H"
-#include "OSspecific.H"
 #include <cmath>
 #include <limits>
 
@@ -32,28 +31,24 @@ Foam::pendularNewton::pendularNewton
     gasSeed_(1e-4),
     hysteresis_(true),
     verbose_(verbose),
-    nanAt_(0),
-    nResiduals_(0)
+    nanResidual_
+    (
+        "pendularNewtonNaN", nanInjection::pendularNewtonResidual
+    ),
+    nanLocalWater_
+    (
+        "pendularNewtonLocalWaterNaN", nanInjection::pendularNewtonLocalWater
+    ),
+    linearHinted_(false)
 {
-    // The test-only NaN injection (off unless set; read once)
-    const std::string nanAt = getEnv("HEARTHFOAM_NEWTON_NAN");
-    if (!nanAt.empty() && !(readLabel(nanAt, nanAt_) && nanAt_ != 0))
-    {
-        FatalErrorInFunction
-            << "Environment variable HEARTHFOAM_NEWTON_NAN = '"
-            << nanAt.c_str() << "': expected a non-zero integer k (the"
-            << " master's first cell's water residual set to NaN at the"
-            << " k-th residual evaluation; -k: at every one from the k-th)"
-            << " or unset" << exit(FatalError);
-    }
-    if (nanAt_ != 0)
-    {
-        Info<< "pendularNewton: HEARTHFOAM_NEWTON_NAN = " << nanAt_
-            << ": the water residual of the first cell (master) is set to"
-            << " NaN at residual evaluation " << mag(nanAt_)
-            << (nanAt_ < 0 ? " and every later one" : " only")
-            << " (test only)" << endl;
-    }
+    nanResidual_.report
+    (
+        "pendularNewton: the water residual of the first cell (master)"
+    );
+    nanLocalWater_.report
+    (
+        "pendularNewton: the water residual of a local water solve (master)"
+    );
 }
 
 
@@ -110,6 +105,10 @@ Foam::label Foam::pendularNewton::solveCellWater
     {
         x[3*c + 2] = W;
         res.cellResidual(c, x, xNbr, Rc);
+        if (nanLocalWater_.fire())
+        {
+            Rc[0] = std::numeric_limits<scalar>::quiet_NaN();
+        }
         finite = finite && std::isfinite(Rc[0]);
         return Rc[0];
     };
@@ -519,6 +518,8 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     scalar rFirst = GREAT;
     // The last iterate's (stall test)
     scalar rPrev = 0;
+    // Linear solves stopped short of their tolerance in this solve
+    label nShort = 0;
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
@@ -527,11 +528,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // no CPU saving measurable on a loaded machine, 2.24 s and 2.35 s;
         // the states of the cells at x are cached for it)
         res.residual(x, R);
-        if
-        (
-            nanAt_ != 0 && Pstream::master()
-         && (++nResiduals_ == nanAt_ || (nanAt_ < 0 && nResiduals_ >= -nanAt_))
-        )
+        if (nanResidual_.fire() && R.size())
         {
             R[0] = std::numeric_limits<scalar>::quiet_NaN();
         }
@@ -731,6 +728,26 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             Info<< "    Newton " << iter << ": linear solver stopped at "
                 << perf.finalResidual() << " after " << perf.nIterations()
                 << " iterations" << endl;
+        }
+        // Newton slowed by inexact steps: said once (the solve's outcome,
+        // the same on every rank)
+        nShort += !perf.converged();
+        if
+        (
+            !linearHinted_ && iter + 1 >= slowIterations_
+         && 2*nShort > iter + 1
+        )
+        {
+            linearHinted_ = true;
+            Info<< "pendularNewton: " << nShort << " of " << iter + 1
+                << " linear solves of this sub-step's Newton steps stopped"
+                << " short of their tolerance (the last at "
+                << perf.finalResidual() << " after " << perf.nIterations()
+                << " iterations): inexact steps slow Newton down. Set a"
+                << " stronger preconditioner in system/fvSolution, e.g."
+                << " coupled { preconditioner lu; } (MUMPS on a decomposed"
+                << " mesh, where block Jacobi loses the coupling across"
+                << " the processor boundaries); said once" << endl;
         }
 
         FixedList<scalar, 3> u(scalar(0));

@@ -4,6 +4,7 @@
 
 #include "richardsNewton.H"
 #include <cmath>
+#include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -19,7 +20,8 @@ Foam::richardsNewton::richardsNewton
     system_(mesh, 1, linearDict),
     STol_(STol),
     dryingFactor_(dryingFactor),
-    maxIter_(maxIter)
+    maxIter_(maxIter),
+    nanResidual_("richardsNewtonNaN", nanInjection::richardsNewtonResidual)
 {
     if (!(STol > 0 && dryingFactor > 0 && dryingFactor < 1 && maxIter > 0))
     {
@@ -28,6 +30,10 @@ Foam::richardsNewton::richardsNewton
             << " ((0, 1)), maxIter = " << maxIter << " (> 0)"
             << exit(FatalError);
     }
+    nanResidual_.report
+    (
+        "richardsNewton: the residual of the first cell (master)"
+    );
 }
 
 
@@ -46,15 +52,13 @@ Foam::richardsNewton::result Foam::richardsNewton::solve
     for (label iter = 0; ; ++iter)
     {
         res.residual(S, R);
+        if (nanResidual_.fire() && R.size())
+        {
+            R[0] = std::numeric_limits<scalar>::quiet_NaN();
+        }
         // A NaN or an infinity in a residual (on any rank): unconverged,
         // before any comparison (which would trap under FOAM_SIGFPE)
-        bool finite = true;
-        forAll(R, c)
-        {
-            finite = finite && std::isfinite(R[c]);
-        }
-        reduce(finite, andOp<bool>());
-        if (!finite)
+        if (!blockSystem::allFinite(R))
         {
             out.iterations = iter;
             return out;
