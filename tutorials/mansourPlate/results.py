@@ -35,6 +35,9 @@ RUNS = (('plate_ahc', 'ahcFoam (AHC conduction)'),
 # pendularFoam run -> the ahcFoam run with the same sand and water
 PAIRS = (('plate_pend', 'plate_ahc'), ('plate_pend_sat', 'plate_ahc_sat'),
          ('plate_pend_lf', 'plate_ahc'))
+# What the liquid's flow changes: the liquidFlow run minus the run with
+# the liquid immobile (same sand, water, plate)
+LF_PAIR = ('plate_pend_lf', 'plate_pend')
 figs = ht.Figures()
 out = []
 
@@ -46,13 +49,26 @@ def say(s=''):
 fmt = ht.fmt
 
 
+def end_time(case):
+    """endTime of the run's controlDict (6 h; 1 h for the liquidFlow run
+    of Allrun -liquidFlow1h)"""
+    import re
+    with open(os.path.join(case, 'system', 'controlDict')) as f:
+        return float(re.search(r'\nendTime\s+(\S+);', f.read()).group(1))
+
+
 def analyse(name):
+    """The figures of run/NAME. A run to less than 6 h (-liquidFlow1h)
+    gives only what it determines: T at the hours it reached, the
+    plateau edges it reached; not the peak."""
     case = os.path.join('run', name)
     s = ht.sensors_of(case)
     t = s['time_s']
-    if abs(t[-1] - END) > 1e-6*END:
+    end = end_time(case)
+    if abs(t[-1] - end) > 1e-6*end:
         raise SystemExit('results.py: run/%s stopped at t = %g s, not %g'
-                         % (name, t[-1], END))
+                         % (name, t[-1], end))
+    full = abs(end - END) <= 1e-6*END
     r = {}
     for sen in SENSORS:
         T = s['d' + sen]
@@ -60,9 +76,15 @@ def analyse(name):
         r['start_' + sen] = None if a is None else a/60.0
         r['end_' + sen] = None if b is None else b/60.0
         r['plateau_' + sen] = None if a is None or b is None else (b - a)/60.0
+        if not full:
+            for k in ('start', 'end', 'plateau'):
+                if r[k + '_' + sen] is None:
+                    del r[k + '_' + sen]
         for h in (1, 3, 6):
-            r['T%dh_%s' % (h, sen)] = ht.interpolate(t, T, h*HOUR)
-        r['peak_' + sen] = ht.peak(t, T)[0]
+            if h*HOUR <= end*(1 + 1e-9):
+                r['T%dh_%s' % (h, sen)] = ht.interpolate(t, T, h*HOUR)
+        if full:
+            r['peak_' + sen] = ht.peak(t, T)[0]
     log = os.path.join(case, 'log.pendularFoam')
     if os.path.exists(log):
         r.update(balances(log))
@@ -109,10 +131,13 @@ for sen in SENSORS:
     say('|---|---|---|---|---|---|---|---|')
     for name, label, r in res:
         say('| %s | %s | %s | %s | %s | %s | %s | %s |' % (
-            label, fmt(r['start_' + sen], '%.0f'), fmt(r['end_' + sen], '%.0f'),
-            fmt(r['plateau_' + sen], '%.0f'), fmt(r['T1h_' + sen], '%.1f'),
-            fmt(r['T3h_' + sen], '%.1f'), fmt(r['T6h_' + sen], '%.1f'),
-            fmt(r['peak_' + sen], '%.1f')))
+            label, fmt(r.get('start_' + sen), '%.0f'),
+            fmt(r.get('end_' + sen), '%.0f'),
+            fmt(r.get('plateau_' + sen), '%.0f'),
+            fmt(r.get('T1h_' + sen), '%.1f'),
+            fmt(r.get('T3h_' + sen), '%.1f'),
+            fmt(r.get('T6h_' + sen), '%.1f'),
+            fmt(r.get('peak_' + sen), '%.1f')))
     say()
 
 # What the coupled model changes: pendularFoam minus ahcFoam
@@ -125,6 +150,9 @@ for name, label, r in res:
     for sen in SENSORS:
         d = {}
         for k in ('start', 'end', 'plateau', 'T1h', 'T3h', 'T6h', 'peak'):
+            if k + '_' + sen not in r:
+                d[k] = None
+                continue
             a, b = ahc[k + '_' + sen], r[k + '_' + sen]
             d[k] = None if a is None or b is None else b - a
             figs.add('%s.minusAhc.%s_%s' % (name, k, sen), d[k],
@@ -135,6 +163,100 @@ for name, label, r in res:
                 fmt(d['plateau'], '%+.0f'), fmt(d['T1h'], '%+.1f'),
                 fmt(d['T3h'], '%+.1f'), fmt(d['T6h'], '%+.1f'),
                 fmt(d['peak'], '%+.1f')))
+    say()
+
+# What the liquid's flow changes: the liquidFlow run minus the run with
+# the liquid immobile
+if LF_PAIR[0] in byName and LF_PAIR[1] in byName:
+    lf, pend = byName[LF_PAIR[0]], byName[LF_PAIR[1]]
+    say('liquidFlow minus the liquid immobile (pendularFoam):')
+    for sen in SENSORS:
+        d = {}
+        for k in ('start', 'end', 'plateau', 'T1h', 'T3h', 'T6h', 'peak'):
+            if k + '_' + sen not in lf:
+                d[k] = None
+                continue
+            a, b = pend[k + '_' + sen], lf[k + '_' + sen]
+            d[k] = None if a is None or b is None else b - a
+            figs.add('%s.minusPend.%s_%s' % (LF_PAIR[0], k, sen), d[k],
+                     'min' if k in ('start', 'end', 'plateau') else 'C')
+        say('  %-6s: 95 C %s min, 105 C %s min, plateau %s min, '
+            'T 1/3/6 h %s/%s/%s C, peak %s C' % (
+                sen, fmt(d['start'], '%+.0f'), fmt(d['end'], '%+.0f'),
+                fmt(d['plateau'], '%+.0f'), fmt(d['T1h'], '%+.1f'),
+                fmt(d['T3h'], '%+.1f'), fmt(d['T6h'], '%+.1f'),
+                fmt(d['peak'], '%+.1f')))
+    say()
+
+
+def internal_field(path):
+    """The internal field of an ascii volScalarField file (uniform or
+    nonuniform) -> list of values, or a float if uniform."""
+    import re
+    text = open(path).read()
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+\d+\s*'
+                  r'\(([^)]*)\)', text)
+    if m:
+        return [float(v) for v in m.group(1).split()]
+    return float(re.search(r'internalField\s+uniform\s+(\S+);',
+                           text).group(1))
+
+
+def water_distribution(name):
+    """Where the water of the liquidFlow run goes, at 0, 1, 3, 6 h: the
+    height of the saturated zone (liquid-only cells, gasPresent 0, from
+    the closed bottom up to the first cell with gas), the water out
+    through the plate (the balance pendularFoam prints) and the water in
+    the column, in kg per m2 of the column's cross-section."""
+    import equilibrium
+    case = os.path.join('run', name)
+    faces = equilibrium.distinct_y(case)
+    xs, zs = equilibrium.extent(case)
+    area = xs*zs
+    bal = dict((round(b['time']), b['water'])
+               for b in ht.pendular_balances(os.path.join(case,
+                                                          'log.pendularFoam')))
+    say('Where the water goes (%s): saturated zone from the bottom, '
+        'water out through the plate and in the column [kg/m2]' % name)
+    end = end_time(case)
+    for h in (h for h in (0, 1, 3, 6) if h*HOUR <= end*(1 + 1e-9)):
+        t = '0' if h == 0 else '%d' % (h*HOUR)
+        gas = internal_field(os.path.join(case, t, 'gasPresent'))
+        gas = [gas]*(len(faces) - 1) if isinstance(gas, float) else gas
+        k = 0
+        while k < len(gas) and gas[k] < 0.5:
+            k += 1
+        height = 100*(faces[k] - faces[0])
+        figs.add('%s.saturatedHeight_%dh' % (name, h), height, 'cm')
+        if h > 0:
+            w = bal[round(h*HOUR)]
+            out_ = w['out_plate']/area
+            figs.add('%s.waterOutPlate_%dh' % (name, h), out_, 'kg/m2')
+            say('  %d h: saturated %.2f cm, out through the plate %.2f, '
+                'in the column %.2f' % (h, height, out_,
+                                        w['inDomain']/area))
+        else:
+            say('  0 h: saturated %.2f cm' % height)
+    say()
+
+
+if LF_PAIR[0] in byName:
+    water_distribution(LF_PAIR[0])
+
+# The water out through the plate of the immobile-liquid run (to compare)
+if LF_PAIR[1] in byName:
+    import equilibrium
+    case = os.path.join('run', LF_PAIR[1])
+    xs, zs = equilibrium.extent(case)
+    bal = dict((round(b['time']), b['water']) for b in
+               ht.pendular_balances(os.path.join(case, 'log.pendularFoam')))
+    outs = []
+    for h in (1, 3, 6):
+        v = bal[round(h*HOUR)]['out_plate']/(xs*zs)
+        figs.add('%s.waterOutPlate_%dh' % (LF_PAIR[1], h), v, 'kg/m2')
+        outs.append('%.2f' % v)
+    say('%s: water out through the plate at 1, 3, 6 h: %s kg/m2'
+        % (LF_PAIR[1], ', '.join(outs)))
     say()
 
 say('Largest relative imbalance (every write)')
