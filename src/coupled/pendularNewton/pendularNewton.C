@@ -323,7 +323,8 @@ void Foam::pendularNewton::unknownsRoundOff
         for (label j = 0; j < 3; ++j)
         {
             const scalar yj = y[j];
-            const scalar magY = j == 1 ? max(mag(yj), mag(yj + pRef)) : mag(yj);
+            const scalar magY =
+                j == 1 ? max(mag(yj), mag(yj + pRef)) : mag(yj);
             if (magY == 0)
             {
                 continue;
