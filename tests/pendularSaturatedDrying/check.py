@@ -102,6 +102,31 @@ for run in runs:
           '%s: %d balances (3 writes), worst |imbalance| %.3g of its bound'
           ' (largest relative %.3g)' % (run, len(blocks), worst, worstRel))
 
+# 8. The graded 40-cell column (30 um top cell) to 150 s, liquid-only: its
+# balances at 50, 100, 150 s as in 1, and its sub-steps rejected at
+# maxIter: the water and energy residuals of its thin top cells stall at
+# the round-off floor of their unknowns (one unit of round-off of the
+# absolute p_l moves a 30-um cell's water residual by 70-220 tolerances
+# at dt ~ 1 s); judged against it (pendularNewton::unknownsRoundOff) 12
+# sub-steps are rejected at maxIter, 26 without it (planted back once)
+log = open(os.path.join(scratch, 'graded_40', 'log.pendularFoam')).read()
+blocks = re.findall(
+    r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
+    r'.*?imbalance\s+=\s+(\S+) \(relative (\S+)\)', log, re.S)
+worst = 0
+for what, t, content, imb, rel in blocks:
+    imb, rel = float(imb), float(rel)
+    scale = abs(imb/rel) if rel != 0 else 0
+    worst = max(worst, abs(imb)/max(1e-10*scale, newtonFloor[what]))
+check(len(blocks) == 9 and worst <= 1,
+      'graded_40 (to 150 s): %d balances (3 writes), worst |imbalance| %.3g'
+      ' of its bound' % (len(blocks), worst))
+nMaxIter = len(re.findall(r'rejected after \d+ iterations \(nonlinear'
+                          r' iterations not converged\)', log))
+check(nMaxIter <= 20,
+      'graded_40 (to 150 s): %d sub-steps rejected at maxIter (at most 20;'
+      ' 26 without the unknowns\' round-off floor)' % nMaxIter)
+
 # 6. Restart from the written phase state (400 s) with fixed steps
 same = all(x == y for x, y in zip(field('serialFixed_20', '600', 'gasPresent'),
                                   field('restartFixed_20', '600', 'gasPresent')))
