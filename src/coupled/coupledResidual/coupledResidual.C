@@ -20,7 +20,11 @@ Foam::coupledResidual::differenceSchemeNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::coupledResidual::step(const scalar xj, const label j) const
+Foam::scalar Foam::coupledResidual::step
+(
+    const scalar xj,
+    const scalar scale
+) const
 {
     // The steps that balance truncation and round-off errors: eps^(1/3)
     // for central differences, eps^(1/2) for forward ones
@@ -29,7 +33,7 @@ Foam::scalar Foam::coupledResidual::step(const scalar xj, const label j) const
     static const scalar hForward = Foam::sqrt(eps);
     const scalar h =
         (scheme_ == differenceScheme::central ? hCentral : hForward)
-       *max(mag(xj), xScale_[j]);
+       *max(mag(xj), scale);
     // A step that is exactly representable around xj
     volatile scalar xp = xj + h;
     return xp - xj;
@@ -42,6 +46,7 @@ void Foam::coupledResidual::localJacobian
     const LocalFunction& G,
     const scalar* G0,
     scalar* y,
+    const scalar* scale,
     scalarSquareMatrix& dGdy
 ) const
 {
@@ -51,7 +56,7 @@ void Foam::coupledResidual::localJacobian
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
-        const scalar h = step(yj, j);
+        const scalar h = step(yj, scale[j]);
         y[j] = yj + h;
         G(y, Gp);
         if (central)
@@ -108,6 +113,7 @@ void Foam::coupledResidual::evaluate
                 [&](const scalar* y, scalar* G) { cellTerm(celli, y, G); },
                 F,
                 xo,
+                cellTermStepScales(celli),
                 dOwn
             );
             system->addDiag(celli, dOwn);
@@ -133,6 +139,7 @@ void Foam::coupledResidual::evaluate
                 [&](const scalar* y, scalar* G) { faceFlux(facei, y, xn, G); },
                 F,
                 xo,
+                xScale_.cdata(),
                 dOwn
             );
             localJacobian
@@ -140,6 +147,7 @@ void Foam::coupledResidual::evaluate
                 [&](const scalar* y, scalar* G) { faceFlux(facei, xo, y, G); },
                 F,
                 xn,
+                xScale_.cdata(),
                 dNei
             );
             system->addFaceFlux(facei, dOwn, dNei);
@@ -189,6 +197,7 @@ void Foam::coupledResidual::evaluate
                     },
                     F,
                     xo,
+                    xScale_.cdata(),
                     dOwn
                 );
                 localJacobian
@@ -199,6 +208,7 @@ void Foam::coupledResidual::evaluate
                     },
                     F,
                     xn,
+                    xScale_.cdata(),
                     dNei
                 );
             }
@@ -212,6 +222,7 @@ void Foam::coupledResidual::evaluate
                     },
                     F,
                     xo,
+                    xScale_.cdata(),
                     dOwn
                 );
             }

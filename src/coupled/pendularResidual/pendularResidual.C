@@ -60,8 +60,14 @@ Foam::pendularResidual::pendularResidual
     nbrPorosity_(),
     nbrAlphaGuess_(),
     phase_(fvMesh_.nCells(), label(bothPhases)),
-    nbrPhase_()
+    nbrPhase_(),
+    liquidOnlyScales_(xScale())
 {
+    if (medium_.saturatedZone())
+    {
+        liquidOnlyScales_[1] = 1/medium_.storage();
+    }
+
     // No state cached yet: keys no unknown can take
     for (auto& entries : cache_)
     {
@@ -198,6 +204,18 @@ void Foam::pendularResidual::setPhases(const labelList& phases)
     labelList newPhases(phases);
     phase_.transfer(newPhases);
     syncTools::swapBoundaryCellList(fvMesh_, phase_, nbrPhase_);
+}
+
+
+const Foam::scalar* Foam::pendularResidual::cellTermStepScales
+(
+    const label celli
+) const
+{
+    return
+        phase_[celli] == liquidOnly
+      ? liquidOnlyScales_.cdata()
+      : coupledResidual::cellTermStepScales(celli);
 }
 
 
