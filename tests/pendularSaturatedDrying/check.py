@@ -107,8 +107,10 @@ for run in runs:
 # maxIter: the water and energy residuals of its thin top cells stall at
 # the round-off floor of their unknowns (one unit of round-off of the
 # absolute p_l moves a 30-um cell's water residual by 70-220 tolerances
-# at dt ~ 1 s); judged against it (pendularNewton::unknownsRoundOff) 12
-# sub-steps are rejected at maxIter, 26 without it (planted back once)
+# at dt ~ 1 s); judged against it (pendularNewton::unknownsRoundOff) 19
+# sub-steps are rejected at maxIter, 34 without it (planted back once,
+# 2026-12-03, with the liquid-only cells' own Jacobian steps; 12 and 26
+# before them): the bound between the two
 log = open(os.path.join(scratch, 'graded_40', 'log.pendularFoam')).read()
 blocks = re.findall(
     r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
@@ -123,9 +125,9 @@ check(len(blocks) == 9 and worst <= 1,
       ' of its bound' % (len(blocks), worst))
 nMaxIter = len(re.findall(r'rejected after \d+ iterations \(nonlinear'
                           r' iterations not converged\)', log))
-check(nMaxIter <= 20,
-      'graded_40 (to 150 s): %d sub-steps rejected at maxIter (at most 20;'
-      ' 26 without the unknowns\' round-off floor)' % nMaxIter)
+check(nMaxIter <= 25,
+      'graded_40 (to 150 s): %d sub-steps rejected at maxIter (at most 25;'
+      ' 34 without the unknowns\' round-off floor)' % nMaxIter)
 
 # 6. Restart from the written phase state (400 s) with fixed steps
 same = all(x == y for x, y in zip(field('serialFixed_20', '600', 'gasPresent'),
