@@ -5,6 +5,8 @@
 #include "nanInjection.H"
 #include "debug.H"
 #include "registerSwitch.H"
+#include "dictionary.H"
+#include "IOstreams.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -40,6 +42,37 @@ registerOptSwitch
     int,
     Foam::nanInjection::richardsNewtonResidual
 );
+
+
+const Foam::wordList Foam::nanInjection::names
+({
+    "pendularNewtonNaN", "pendularNewtonLocalWaterNaN", "richardsNewtonNaN"
+});
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
+{
+    const dictionary* optPtr =
+        controlDict.findDict("OptimisationSwitches", keyType::LITERAL);
+    if (!optPtr)
+    {
+        return;
+    }
+    for (const entry& e : *optPtr)
+    {
+        const word& key = e.keyword();
+        if (key.endsWith("NaN") && !names.found(key))
+        {
+            FatalIOErrorInFunction(*optPtr)
+                << "Unknown OptimisationSwitch '" << key << "' in "
+                << controlDict.name() << " (OpenFOAM would ignore it): the"
+                << " NaN injection switches are " << names
+                << exit(FatalIOError);
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
