@@ -131,6 +131,24 @@ def depth_reached(depth, TMax, level):
     return depth[-1]
 
 
+def read_internal_field(path):
+    """Values of an ascii volScalarField's internalField (uniform: one
+    value; nonuniform List<scalar>: the list). One reader for the tests
+    (tests/lib/hearthcheck.py) and the tutorials."""
+    with open(path) as f:
+        txt = f.read()
+    m = re.search(r'internalField\s+uniform\s+(\S+);', txt)
+    if m:
+        return [float(m.group(1))]
+    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(',
+                  txt)
+    if not m:
+        raise SystemExit('%s: no ascii scalar internalField' % path)
+    n = int(m.group(1))
+    body = txt[m.end():]
+    return [float(v) for v in body.split(')')[0].split()[:n]]
+
+
 def time_dirs(path):
     """The numeric subfolders of path, sorted by time"""
     return sorted((d for d in glob.glob(os.path.join(path, '*'))

@@ -18,11 +18,11 @@ import sys
 COST_MARGIN = 0.3
 REJECTED_SLACK = 2
 
-# The tutorials' reader of probes files (etc/python/hearthTutorial.py: one
-# reader for the tests and the tutorials)
+# The tutorials' readers of probes files and internal fields
+# (etc/python/hearthTutorial.py: one reader for the tests and the tutorials)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', '..', 'etc', 'python'))
-from hearthTutorial import read_probes  # noqa: E402
+from hearthTutorial import read_probes, read_internal_field  # noqa: E402,F401
 
 
 def read_energy_balances(log):
@@ -90,19 +90,6 @@ def cost_allowance(stated, margin=COST_MARGIN, slack=0):
     """Largest count a budget of `stated` allows: stated (1 + margin),
     and at least stated + slack."""
     return max(int(math.floor(stated*(1 + margin) + 1e-9)), stated + slack)
-
-
-def read_internal_field(path):
-    """Values of an ascii volScalarField's internalField (uniform or list)."""
-    with open(path) as f:
-        txt = f.read()
-    m = re.search(r'internalField\s+uniform\s+(\S+);', txt)
-    if m:
-        return [float(m.group(1))]
-    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(', txt)
-    n = int(m.group(1))
-    body = txt[m.end():]
-    return [float(v) for v in body.split(')')[0].split()[:n]]
 
 
 # --------------------------------------------------------------------------

@@ -140,22 +140,20 @@ for sen in SENSORS:
             fmt(r.get('peak_' + sen), '%.1f')))
     say()
 
-# What the coupled model changes: pendularFoam minus ahcFoam
-byName = dict((name, r) for name, _, r in res)
-for name, label, r in res:
-    if name not in dict(PAIRS):
-        continue
-    ahc = byName[dict(PAIRS)[name]]
-    say('%s minus ahcFoam:' % label)
+def minus(r, ref, prefix, title):
+    """The figures of run r minus those of the reference run ref (each
+    plateau edge, plateau, T at 1, 3, 6 h, peak that both have) as
+    figures PREFIX.<key>_<sensor>, and their line of results.txt"""
+    say(title)
     for sen in SENSORS:
         d = {}
         for k in ('start', 'end', 'plateau', 'T1h', 'T3h', 'T6h', 'peak'):
             if k + '_' + sen not in r:
                 d[k] = None
                 continue
-            a, b = ahc[k + '_' + sen], r[k + '_' + sen]
+            a, b = ref[k + '_' + sen], r[k + '_' + sen]
             d[k] = None if a is None or b is None else b - a
-            figs.add('%s.minusAhc.%s_%s' % (name, k, sen), d[k],
+            figs.add('%s.%s_%s' % (prefix, k, sen), d[k],
                      'min' if k in ('start', 'end', 'plateau') else 'C')
         say('  %-6s: 95 C %s min, 105 C %s min, plateau %s min, '
             'T 1/3/6 h %s/%s/%s C, peak %s C' % (
@@ -164,42 +162,20 @@ for name, label, r in res:
                 fmt(d['T3h'], '%+.1f'), fmt(d['T6h'], '%+.1f'),
                 fmt(d['peak'], '%+.1f')))
     say()
+
+
+# What the coupled model changes: pendularFoam minus ahcFoam
+byName = dict((name, r) for name, _, r in res)
+for name, label, r in res:
+    if name in dict(PAIRS):
+        minus(r, byName[dict(PAIRS)[name]], name + '.minusAhc',
+              '%s minus ahcFoam:' % label)
 
 # What the liquid's flow changes: the liquidFlow run minus the run with
 # the liquid immobile
 if LF_PAIR[0] in byName and LF_PAIR[1] in byName:
-    lf, pend = byName[LF_PAIR[0]], byName[LF_PAIR[1]]
-    say('liquidFlow minus the liquid immobile (pendularFoam):')
-    for sen in SENSORS:
-        d = {}
-        for k in ('start', 'end', 'plateau', 'T1h', 'T3h', 'T6h', 'peak'):
-            if k + '_' + sen not in lf:
-                d[k] = None
-                continue
-            a, b = pend[k + '_' + sen], lf[k + '_' + sen]
-            d[k] = None if a is None or b is None else b - a
-            figs.add('%s.minusPend.%s_%s' % (LF_PAIR[0], k, sen), d[k],
-                     'min' if k in ('start', 'end', 'plateau') else 'C')
-        say('  %-6s: 95 C %s min, 105 C %s min, plateau %s min, '
-            'T 1/3/6 h %s/%s/%s C, peak %s C' % (
-                sen, fmt(d['start'], '%+.0f'), fmt(d['end'], '%+.0f'),
-                fmt(d['plateau'], '%+.0f'), fmt(d['T1h'], '%+.1f'),
-                fmt(d['T3h'], '%+.1f'), fmt(d['T6h'], '%+.1f'),
-                fmt(d['peak'], '%+.1f')))
-    say()
-
-
-def internal_field(path):
-    """The internal field of an ascii volScalarField file (uniform or
-    nonuniform) -> list of values, or a float if uniform."""
-    import re
-    text = open(path).read()
-    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+\d+\s*'
-                  r'\(([^)]*)\)', text)
-    if m:
-        return [float(v) for v in m.group(1).split()]
-    return float(re.search(r'internalField\s+uniform\s+(\S+);',
-                           text).group(1))
+    minus(byName[LF_PAIR[0]], byName[LF_PAIR[1]], LF_PAIR[0] + '.minusPend',
+          'liquidFlow minus the liquid immobile (pendularFoam):')
 
 
 def water_distribution(name):
@@ -218,11 +194,17 @@ def water_distribution(name):
                                                           'log.pendularFoam')))
     say('Where the water goes (%s): saturated zone from the bottom, '
         'water out through the plate and in the column [kg/m2]' % name)
+    # the water at the start: in the domain minus its stored change at
+    # the first balance pendularFoam prints
+    first = bal[min(bal)]
+    w0 = (first['inDomain'] - first['stored'])/area
+    figs.add('%s.waterInColumn_0h' % name, w0, 'kg/m2')
+    say('  at the start: %.2f kg/m2 in the column' % w0)
     end = end_time(case)
     for h in (h for h in (0, 1, 3, 6) if h*HOUR <= end*(1 + 1e-9)):
         t = '0' if h == 0 else '%d' % (h*HOUR)
-        gas = internal_field(os.path.join(case, t, 'gasPresent'))
-        gas = [gas]*(len(faces) - 1) if isinstance(gas, float) else gas
+        gas = ht.read_internal_field(os.path.join(case, t, 'gasPresent'))
+        gas = gas*(len(faces) - 1) if len(gas) == 1 else gas
         k = 0
         while k < len(gas) and gas[k] < 0.5:
             k += 1
@@ -242,6 +224,23 @@ def water_distribution(name):
 
 if LF_PAIR[0] in byName:
     water_distribution(LF_PAIR[0])
+
+# The equilibrium start kept isothermal 20 s (Allrun with -liquidFlow*):
+# the largest change of alpha_l over the cells, and where
+REST = 'plate_pend_rest'
+if os.path.isdir(os.path.join('run', REST)):
+    case = os.path.join('run', REST)
+    a0 = ht.read_internal_field(os.path.join(case, '0', 'alphaL'))
+    a1 = ht.read_internal_field(os.path.join(case, '20', 'alphaL'))
+    d = [abs(x - y) for x, y in zip(a1, a0)]
+    k = max(range(len(d)), key=lambda i: d[i])
+    figs.add(REST + '.alphaLChange_20s', d[k], '-')
+    dInner = max(d[:k] + d[k + 1:]) if len(d) > 1 else 0.0
+    figs.add(REST + '.alphaLChangeOthers_20s', dInner, '-')
+    say('%s: the equilibrium start isothermal for 20 s: alpha_l changes '
+        'by at most %.2g (cell %d of %d from the bottom), %.2g in the '
+        'other cells' % (REST, d[k], k + 1, len(d), dInner))
+    say()
 
 # The water out through the plate of the immobile-liquid run (to compare)
 if LF_PAIR[1] in byName:
