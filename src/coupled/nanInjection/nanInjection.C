@@ -7,6 +7,7 @@
 #include "registerSwitch.H"
 #include "dictionary.H"
 #include "IOstreams.H"
+#include <cctype>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -60,16 +61,41 @@ void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
     {
         return;
     }
+    // A key starting with an engine's name (any case: pendularNewtonNan,
+    // PendularNewtonNaN) or ending in NaN that is none of the names
+    auto startsNoCase = [](const word& key, const std::string& prefix)
+    {
+        if (key.size() < prefix.size())
+        {
+            return false;
+        }
+        for (std::string::size_type i = 0; i < prefix.size(); ++i)
+        {
+            if (std::tolower(key[i]) != std::tolower(prefix[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    };
     for (const entry& e : *optPtr)
     {
         const word& key = e.keyword();
-        if (key.endsWith("NaN") && !names.found(key))
+        if
+        (
+            (
+                key.endsWith("NaN")
+             || startsNoCase(key, "pendularNewton")
+             || startsNoCase(key, "richardsNewton")
+            )
+         && !names.found(key)
+        )
         {
             FatalIOErrorInFunction(*optPtr)
                 << "Unknown OptimisationSwitch '" << key << "' in "
                 << controlDict.name() << " (OpenFOAM would ignore it): the"
                 << " NaN injection switches are " << names
-                << exit(FatalIOError);
+                << " (case-sensitive)" << exit(FatalIOError);
         }
     }
 }

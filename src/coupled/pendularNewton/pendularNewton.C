@@ -39,7 +39,16 @@ Foam::pendularNewton::pendularNewton
     (
         "pendularNewtonLocalWaterNaN", nanInjection::pendularNewtonLocalWater
     ),
-    linearHinted_(false)
+    linearHinted_
+    (
+        // (LU already in use: no hint to it)
+        blockSystem::preconditionerTypeNames.getOrDefault
+        (
+            "preconditioner", linearDict,
+            blockSystem::preconditionerType::bjacobi
+        )
+     == blockSystem::preconditionerType::lu
+    )
 {
     nanResidual_.report
     (
@@ -288,7 +297,7 @@ Foam::scalar Foam::pendularNewton::gasRoundOff
 }
 
 
-void Foam::pendularNewton::unknownsRoundOff
+bool Foam::pendularNewton::unknownsRoundOff
 (
     const pendularResidual& res,
     const label c,
@@ -313,6 +322,16 @@ void Foam::pendularNewton::unknownsRoundOff
     res.cellResidual(c, x, xNbr, R0);
     combine(R0, G0);
     floor[0] = floor[1] = floor[2] = 0;
+    // A residual that is not finite at the iterate or at a perturbed
+    // state (a closure out of its range): no floor (tested with
+    // std::isfinite before any ordered comparison, which would trap under
+    // FOAM_SIGFPE)
+    bool finite =
+        std::isfinite(G0[0]) && std::isfinite(G0[1]) && std::isfinite(G0[2]);
+    if (!finite)
+    {
+        return false;
+    }
 
     // The unknowns y[0..2] of a cell (in x or in xNbr): each perturbed by
     // its forward step, the change of cell c's residual times epsilon
@@ -337,7 +356,11 @@ void Foam::pendularNewton::unknownsRoundOff
             combine(R1, G1);
             for (label k = 0; k < 3; ++k)
             {
-                floor[k] += gasFloorEps_*mag(G1[k] - G0[k])/h*eps*magY;
+                finite = finite && std::isfinite(G1[k]);
+                if (finite)
+                {
+                    floor[k] += gasFloorEps_*mag(G1[k] - G0[k])/h*eps*magY;
+                }
             }
         }
     };
@@ -362,6 +385,15 @@ void Foam::pendularNewton::unknownsRoundOff
             }
         }
     }
+    for (label k = 0; k < 3; ++k)
+    {
+        finite = finite && std::isfinite(floor[k]);
+    }
+    if (!finite)
+    {
+        floor[0] = floor[1] = floor[2] = 0;
+    }
+    return finite;
 }
 
 
@@ -517,7 +549,9 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     out.converged = false;
     out.valid = valid(res, x, pRef);
     out.residual = GREAT;
+    out.judged = GREAT;
     out.update = GREAT;
+    out.unknownsFloorMax = 0;
     if (!out.valid)
     {
         return out;
@@ -704,20 +738,24 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // of round-off of the absolute p of a liquidOnly top cell changes
         // its water residual by 70-220 tolerances, and the residual
         // stalled at 36-87 tolerances (updates 1e-3 to 2e-2 tolerances)
-        // until maxIter: 741 sub-steps rejected before the run stopped at
-        // 157.07 s, 250 with this floor (the stop itself is another cause,
-        // the top cell's gas at S_l -> 1: README, saturated zone). Once
-        // the last update is below the tolerances, each
-        // liquidOnly cell with a residual above its tolerance is judged
-        // against the larger of its tolerance and that floor (the cells of
-        // the measured stalls: p_l with k_rl = 1 and a nearly
-        // incompressible storage; for every cell, tests/pendularWaterTable's
-        // hydrostatic_open balance reached 1.5e-10, above its 1e-10)
-        // (unknownsRoundOff; 10 epsilon as gasRoundOff's; Kelley,
-        // 1995, Iterative Methods for Linear and Nonlinear Equations, ch. 5:
-        // Newton's iterates stagnate at the error of the residual's
-        // evaluation)
+        // until maxIter. Once the last update is below the tolerances, a
+        // liquidOnly cell with a residual above its tolerance whose every
+        // such residual is below its floor (unknownsRoundOff: 10 epsilon,
+        // gasRoundOff's factor; Kelley, 1995, Iterative Methods for Linear
+        // and Nonlinear Equations, ch. 5: Newton's iterates stagnate at
+        // the error of the residual's evaluation) is accepted on it: it
+        // enters the acceptance tests below at its residual over its floor
+        // (below 1), so floorFactor_ and stallFactor_ never multiply the
+        // floor. A cell above its floor, or whose floor is above
+        // maxUnknownsFloor_ tolerances, is judged against its tolerance as
+        // any cell. Only liquidOnly cells (the cells of the measured
+        // stalls: p_l with k_rl = 1 and a nearly incompressible storage;
+        // for every cell, tests/pendularWaterTable's hydrostatic_open
+        // balance reached 1.5e-10, above its 1e-10). out.residual stays in
+        // units of the tolerances; out.judged is what the tests below see
         out.nUnknownsFloor = 0;
+        out.unknownsFloorMax = 0;
+        FixedList<scalar, 3> judged(r);
         if
         (
             switching && iter > 0 && max(r[0], max(r[1], r[2])) >= 1
@@ -744,6 +782,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 {
                     tol[1] = max(tol[1], gasFloor[c]);
                 }
+                scalar scale[3] = {tol[0], tol[1], tol[2]};
                 if
                 (
                     liquidOnly
@@ -751,22 +790,35 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 )
                 {
                     scalar floor[3];
-                    unknownsRoundOff(res, c, x, xNbr, pRef, floor);
-                    bool atFloor = false;
-                    for (label k = 0; k < 3; ++k)
+                    // (a non-finite residual at a perturbed state: no
+                    // floor)
+                    bool atFloor =
+                        unknownsRoundOff(res, c, x, xNbr, pRef, floor);
+                    scalar floorTol = 0;
+                    for (label k = 0; k < 3 && atFloor; ++k)
                     {
-                        atFloor =
-                            atFloor || (Rc[k] >= tol[k] && Rc[k] < floor[k]);
-                        tol[k] = max(tol[k], floor[k]);
+                        if (Rc[k] >= tol[k])
+                        {
+                            atFloor =
+                                Rc[k] < floor[k]
+                             && floor[k] <= maxUnknownsFloor_*tol[k];
+                            floorTol = max(floorTol, floor[k]/tol[k]);
+                        }
                     }
                     if (atFloor)
                     {
                         ++out.nUnknownsFloor;
+                        out.unknownsFloorMax =
+                            max(out.unknownsFloorMax, floorTol);
+                        for (label k = 0; k < 3; ++k)
+                        {
+                            scale[k] = max(tol[k], floor[k]);
+                        }
                     }
                 }
                 for (label k = 0; k < 3; ++k)
                 {
-                    rf[k] = max(rf[k], Rc[k]/tol[k]);
+                    rf[k] = max(rf[k], Rc[k]/scale[k]);
                 }
             }
             for (label k = 0; k < 3; ++k)
@@ -774,9 +826,11 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 reduce(rf[k], maxOp<scalar>());
             }
             reduce(out.nUnknownsFloor, sumOp<label>());
-            r = rf;
+            reduce(out.unknownsFloorMax, maxOp<scalar>());
+            judged = rf;
         }
         out.residual = r;
+        out.judged = judged;
 
         if (verbose_)
         {
@@ -792,8 +846,11 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             }
             if (out.nUnknownsFloor)
             {
-                Info<< ", at the unknowns' round-off floor in "
-                    << out.nUnknownsFloor << " cells";
+                Info<< ", " << out.nUnknownsFloor << " liquid-only cells"
+                    << " within the unknowns' round-off floor (up to "
+                    << out.unknownsFloorMax << " tolerances; judged: water "
+                    << judged[0] << ", gas " << judged[1] << ", energy "
+                    << judged[2] << ")";
             }
             Info<< endl;
         }
@@ -803,7 +860,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // times the water tolerance with WTol 1e-11: the balances' terms
         // cancel to 1e-16 of the stored water) with an update 100 times
         // below the tolerances, whose error the Newton step estimates
-        const scalar rMax = max(r[0], max(r[1], r[2]));
+        const scalar rMax = max(judged[0], max(judged[1], judged[2]));
         const scalar uMax =
             max(out.update[0], max(out.update[1], out.update[2]));
         // The error of the iterate estimated from the contraction of the

@@ -30,6 +30,7 @@ Description
 #include "petscSession.H"
 #include "blockSystem.H"
 #include "richardsNewton.H"
+#include "nanInjection.H"
 #include "checkedRead.H"
 #include "unitChecks.H"
 #include "OFstream.H"
@@ -80,6 +81,10 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
+
+    // A misspelt NaN injection switch (richardsNewtonNan): an error, not
+    // ignored
+    nanInjection::checkSwitchNames(runTime.controlDict());
 
     petscSession petsc;
 
