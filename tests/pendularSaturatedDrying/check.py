@@ -111,7 +111,9 @@ for run in runs:
 # at dt ~ 1 s); judged against it (pendularNewton::unknownsRoundOff) 19
 # sub-steps are rejected at maxIter, 34 without it (planted back once,
 # 2026-12-03, with the liquid-only cells' own Jacobian steps; 12 and 26
-# before them): the bound between the two
+# before them): the bound between the two. floorFix (2026-12-03): a cell
+# accepted on the floor only within it, the floor capped at 1e3
+# tolerances: 18 measured
 log = open(os.path.join(scratch, 'graded_40', 'log.pendularFoam')).read()
 blocks = re.findall(
     r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
