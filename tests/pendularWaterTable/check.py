@@ -174,17 +174,12 @@ def water_flows(log):
 
 
 def field_at(case, time, name):
-    """The internal field name of case at a written time (list)."""
+    """The internal field name of case at a written time (list; a uniform
+    field as PONDED_N values)."""
     dirs = [d for d in os.listdir(case)
             if re.match(r'^[0-9.e+]+$', d) and abs(float(d) - time) < 1e-9]
-    with open(os.path.join(case, dirs[0], name)) as f:
-        text = f.read()
-    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*'
-                  r'\(([^)]*)\)', text)
-    if m:
-        return [float(v) for v in m.group(2).split()]
-    m = re.search(r'internalField\s+uniform\s+(\S+);', text)
-    return [float(m.group(1))]*PONDED_N
+    values = hc.read_internal_field(os.path.join(case, dirs[0], name))
+    return values*PONDED_N if len(values) == 1 else values
 
 
 # (f), (g): the ponded column
