@@ -81,6 +81,7 @@ import re
 import sys
 
 import hearthcheck as hc
+from hearthTutorial import pendular_balances  # noqa: E402
 
 PC0 = 4905.0
 A = 2.0                     # 1/m: rho_l g/p_c0
@@ -98,17 +99,13 @@ E = 9.81e-5/RHO             # m/s
 
 
 def read_field(case, name):
+    """The internal field name at the last written time of case (a list;
+    a uniform field as one float)."""
     times = [d for d in os.listdir(case)
              if re.match(r'^[0-9.e+]+$', d) and float(d) > 0]
     last = max(times, key=float)
-    with open(os.path.join(case, last, name)) as f:
-        text = f.read()
-    m = re.search(r'internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*'
-                  r'\(([^)]*)\)', text)
-    if m:
-        return [float(v) for v in m.group(2).split()]
-    m = re.search(r'internalField\s+uniform\s+(\S+);', text)
-    return None if not m else float(m.group(1))
+    values = hc.read_internal_field(os.path.join(case, last, name))
+    return values[0] if len(values) == 1 else values
 
 
 def cells(case, n):
@@ -126,51 +123,23 @@ def hydrostatic_s(pg, z, zwt):
 def last_outflow(log, patch='bottom'):
     """The water that left through patch since the start (the last
     water balance of the log; 0 if it names no flow through patch)."""
-    out, water = None, False
-    with open(log) as f:
-        for line in f:
-            if line.startswith('Water balance'):
-                water, out = True, 0.0
-            elif re.match(r'^\S', line):
-                water = False
-            m = re.search(r'out through %s = (\S+)' % patch, line)
-            if m and water:
-                out = float(m.group(1))
-    return out
+    balances = pendular_balances(log)
+    return balances[-1]['water'].get('out_' + patch, 0.0) if balances \
+        else None
 
 
 def last_water_stored_change(log):
     """The stored change of the last water balance of the log [kg]."""
-    stored, water = None, False
-    with open(log) as f:
-        for line in f:
-            if line.startswith('Water balance'):
-                water = True
-            elif re.match(r'^\S', line):
-                water = False
-            m = re.search(r'stored change\s+=\s+(\S+)', line)
-            if m and water:
-                stored = float(m.group(1))
-    return stored
+    balances = pendular_balances(log)
+    return balances[-1]['water'].get('stored') if balances else None
 
 
 def water_flows(log):
     """{t: {patch: water out through it since the start [kg]}} of every
     water balance of the log."""
-    flows, t = {}, None
-    with open(log) as f:
-        for line in f:
-            m = re.match(r'^Water balance at t = (\S+) s', line)
-            if m:
-                t = float(m.group(1))
-                flows[t] = {}
-                continue
-            if re.match(r'^\S', line):
-                t = None
-            m = re.search(r'out through (\S+) = (\S+)', line)
-            if m and t is not None:
-                flows[t][m.group(1)] = float(m.group(2))
-    return flows
+    return {b['time']: {k[4:]: v for k, v in b['water'].items()
+                        if k.startswith('out_')}
+            for b in pendular_balances(log)}
 
 
 def field_at(case, time, name):
