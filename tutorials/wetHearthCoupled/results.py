@@ -281,24 +281,26 @@ say()
 # (pendularMedium::liquidNearCritical) in its log
 def wet_cells(case):
     """(largest T of a cell with alpha_l > 0, largest T of a liquid-only
-    cell) over the written times but 0 [C]"""
-    wet, liquidOnly = -ht.T0, -ht.T0
+    cell) over the written times but 0 [C], the largest gas pressure
+    [bar] and the number of liquid-only cells at each written time"""
+    wet, liquidOnly, pMax, nLiquidOnly = -ht.T0, -ht.T0, 0.0, {}
     for d in ht.time_dirs(case):
         if float(os.path.basename(d)) == 0:
             continue
         T = ht.read_internal_field(os.path.join(d, 'T'))
         a = ht.read_internal_field(os.path.join(d, 'alphaL'))
         g = ht.read_internal_field(os.path.join(d, 'gasPresent'))
-        if len(a) == 1:
-            a = a*len(T)
-        if len(g) == 1:
-            g = g*len(T)
-        for Tc, ac, gc in zip(T, a, g):
+        p = ht.read_internal_field(os.path.join(d, 'p'))
+        a, g, p = [f*len(T) if len(f) == 1 else f for f in (a, g, p)]
+        for Tc, ac, gc, pc in zip(T, a, g, p):
             if ac > 0:
                 wet = max(wet, Tc - ht.T0)
             if gc < 0.5:
                 liquidOnly = max(liquidOnly, Tc - ht.T0)
-    return wet, liquidOnly
+            else:
+                pMax = max(pMax, pc/1e5)
+        nLiquidOnly[float(os.path.basename(d))] = sum(gc < 0.5 for gc in g)
+    return wet, liquidOnly, pMax, nLiquidOnly
 
 
 hearthSat = []
@@ -319,12 +321,19 @@ for K in ('1e-14', '1e-16'):
         say('pendularFoam with the saturated zone, flat hearth:')
         stops(name, 'alpha_l0 = 1, K = ' + K)
     case = os.path.join('run', name)
-    wet, liquidOnly = wet_cells(case)
+    wet, liquidOnly, pMax, nLiquidOnly = wet_cells(case)
     with open(os.path.join(case, 'log.pendularFoam')) as f:
         critical = f.read().count('near the critical point')
     figs.add(name + '.TwetMax', wet, 'C')
     figs.add(name + '.TliquidOnlyMax', liquidOnly, 'C')
     figs.add(name + '.criticalRejections', critical, '-')
+    figs.add(name + '.pgMax', pMax, 'bar')
+    for t in (3600.0, 21600.0, 86400.0):
+        figs.add('%s.liquidOnlyCells_%gh' % (name, t/HOUR),
+                 nLiquidOnly.get(t), '-')
+    say('  %s: largest gas pressure at the writes %.2f bar; liquid-only'
+        ' cells at 1, 6, 24 h: %s' % (label, pMax, ', '.join(
+            str(nLiquidOnly.get(t)) for t in (3600.0, 21600.0, 86400.0))))
     say('  %s: hottest cell holding liquid at the writes %.1f C, hottest'
         ' liquid-only cell %.1f C; sub-steps rejected for liquid near the'
         ' critical point: %d' % (label, wet, liquidOnly, critical))
