@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Capillary-gravity equilibrium start of the -liquidFlow column.
 
-    equilibrium.py CASE ALPHAL0
+    equilibrium.py CASE ALPHAL0 [TOP]
 
 Writes CASE/0/alphaL, p, pl, gasPresent, Xair: the column at rest (the
-uniform T of 0/T, the gas at the pressure p0 of 0/p's plate patch, the
-open top) with the same liquid as the uniform start alpha_l0 (sum of phi
-alpha_l dz over the cells), the liquid hydrostatic about a water table at
-y_wt:
+uniform T of 0/T, the gas at the pressure p0 of 0/p's patch TOP, the
+open top: `plate` unless given; tutorials/wetHearthCoupled's is `fire`)
+with the same liquid as the uniform start alpha_l0 (sum of phi alpha_l dz
+over the cells), the liquid hydrostatic about a water table at y_wt:
 
     p_l(y) = p0 - rho_l |g| (y - y_wt),
 
@@ -43,10 +43,10 @@ capillaryPressureModel, which must be vanGenuchten (another law has
 p_c(1) != 0: p = p_l in the liquid-only cells would be wrong), its alpha,
 n, Swr, Sgr, pcLinearBelowSe (the start must not hold a cell below it:
 refused) and saturatedZone's henry), constant/g, 0/T (uniform), 0/p (its
-plate patch value), system/fvSolution (gasSeed), the cells from
+TOP patch value), system/fvSolution (gasSeed), the cells from
 constant/polyMesh/points (a 1-D column along y, one cell across: cell j
 between the j-th and (j+1)-th distinct y). The patches must be this
-tutorial's (plate: the open top, bottom, sides: empty; read from
+tutorial's (TOP: the open top, bottom, sides: empty; read from
 constant/polyMesh/boundary and checked): the boundary conditions written
 are its. Each error exits non-zero naming the file, the keyword and its
 valid range.
@@ -61,7 +61,7 @@ import sys
 WP_TC, WP_PC = 647.096, 22.064e6
 WP_A = (-7.85951783, 1.84408259, -11.7866497, 22.6807411, -15.9618719,
         1.80122502)
-PATCHES = {'plate': 'patch', 'bottom': 'patch', 'sides': 'empty'}
+PATCHES = {'bottom': 'patch', 'sides': 'empty'}   # and TOP: 'patch'
 
 
 def fail(path, msg):
@@ -222,21 +222,23 @@ def need(body, name, path, where):
     return d
 
 
-def check_patches(case):
+def check_patches(case, top):
     """The patches of constant/polyMesh/boundary must be this tutorial's
-    (PATCHES): the boundary conditions written are its"""
+    (PATCHES and the open top): the boundary conditions written are its"""
     path, text = read(case, 'constant/polyMesh/boundary')
     found = dict((n, t) for n, t in re.findall(
         r'(\w+)\s*\{[^}]*?\btype\s+(\w+)\s*;', text))
-    if found != PATCHES:
+    expected = dict(PATCHES, **{top: 'patch'})
+    if found != expected:
         fail(path, 'patches %s: this script writes the boundary conditions '
-             'of %s (name: type)' % (found, PATCHES))
+             'of %s (name: type)' % (found, expected))
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     case = sys.argv[1]
+    top = sys.argv[3] if len(sys.argv) == 4 else 'plate'
     try:
         alpha0 = float(sys.argv[2])
     except ValueError:
@@ -244,7 +246,7 @@ def main():
     if not 0 < alpha0 < 1:
         sys.exit('equilibrium.py: ALPHAL0 = %s (%s/0/alphaL internalField) '
                  'out of its valid range (0, 1)' % (sys.argv[2], case))
-    check_patches(case)
+    check_patches(case, top)
     path, soil = read(case, 'constant/soilProperties')
     pend = need(soil, 'pendular', path, '')
     lf = need(pend, 'liquidFlow', path, 'pendular/')
@@ -291,10 +293,11 @@ def main():
         fail(os.path.join(case, '0/T'), 'internalField %g out of the '
              'valid range [273.16, %g) K of wagnerPruss' % (T, WP_TC))
     ppath, ptext = read(case, '0/p')
-    pm = re.search(r'\bplate\s*\{[^}]*\bvalue\s+uniform\s+(\S+)\s*;', ptext)
+    pm = re.search(r'\b%s\s*\{[^}]*\bvalue\s+uniform\s+(\S+)\s*;'
+                   % re.escape(top), ptext)
     if not pm or not float(pm.group(1)) > 0:
-        fail(ppath, 'boundaryField/plate value must be uniform, > 0 '
-             '(the gas pressure at the open top)')
+        fail(ppath, 'boundaryField/%s value must be uniform, > 0 '
+             '(the gas pressure at the open top)' % top)
     p0 = float(pm.group(1))
     spath, fvs = read(case, 'system/fvSolution')
     nl = subdict(fvs, 'nonlinear', spath) or ''
@@ -360,9 +363,9 @@ def main():
     X = [kH*(p0 - pw) if s[2] or s[1] >= p0
          else kH*(s[1] - pw)*(1 - 1e-9) for s in st]
 
-    patches = [('plate', 'type zeroGradient;'),
+    patches = [(top, 'type zeroGradient;'),
                ('bottom', 'type zeroGradient;'), ('sides', 'type empty;')]
-    pPatches = [('plate', 'type fixedValue; value uniform %.10g;' % p0),
+    pPatches = [(top, 'type fixedValue; value uniform %.10g;' % p0),
                 ('bottom', 'type zeroGradient;'), ('sides', 'type empty;')]
     write_field(case, 'alphaL', '[0 0 0 0 0 0 0]', [s[0] for s in st],
                 'capillary-gravity equilibrium, water table at y = %.6g m'

@@ -272,6 +272,81 @@ say('pendularFoam, flat hearth, alpha_l0 = 0.5, K = 1e-18 m2:')
 stops('hearth_pend_0.5_1e-18', 'K = 1e-18')
 say()
 
+# The flagship's own saturated soil with the saturated zone (Allrun: runs
+# hearth_pendSat_1_*, saturatedZone, MQ, started at rest): its figures
+# against the saturated ahcFoam column, or where it stops; and the liquid
+# near the critical point: the hottest cell holding liquid (alpha_l > 0)
+# and the hottest liquid-only cell at the writes (hourly), and the
+# sub-steps the solver rejected for liquid near the critical point
+# (pendularMedium::liquidNearCritical) in its log
+def wet_cells(case):
+    """(largest T of a cell with alpha_l > 0, largest T of a liquid-only
+    cell) over the written times but 0 [C], the largest gas pressure
+    [bar] and the number of liquid-only cells at each written time"""
+    wet, liquidOnly, pMax, nLiquidOnly = -ht.T0, -ht.T0, 0.0, {}
+    for d in ht.time_dirs(case):
+        if float(os.path.basename(d)) == 0:
+            continue
+        T = ht.read_internal_field(os.path.join(d, 'T'))
+        a = ht.read_internal_field(os.path.join(d, 'alphaL'))
+        g = ht.read_internal_field(os.path.join(d, 'gasPresent'))
+        p = ht.read_internal_field(os.path.join(d, 'p'))
+        a, g, p = [f*len(T) if len(f) == 1 else f for f in (a, g, p)]
+        for Tc, ac, gc, pc in zip(T, a, g, p):
+            if ac > 0:
+                wet = max(wet, Tc - ht.T0)
+            if gc < 0.5:
+                liquidOnly = max(liquidOnly, Tc - ht.T0)
+            else:
+                pMax = max(pMax, pc/1e5)
+        nLiquidOnly[float(os.path.basename(d))] = sum(gc < 0.5 for gc in g)
+    return wet, liquidOnly, pMax, nLiquidOnly
+
+
+hearthSat = []
+for K in ('1e-14', '1e-16'):
+    name = 'hearth_pendSat_1_%s' % K
+    if not os.path.isdir(os.path.join('run', name)):
+        continue
+    label = 'pendularFoam saturatedZone, alpha_l0 = 1, K = %s' % K
+    if reached_end(name):
+        r = analyse(name, 86400.0, SENS_H, True)
+        hearthSat.append((label, r))
+        sat = hearth[0][1]
+        for k, sc in (('d290_6h', 1), ('d290_end', 1), ('t290_3.5cm', 1/HOUR)):
+            figs.add('%s.minusAhcSat.%s' % (name, k),
+                     None if r[k] is None else (r[k] - sat[k])*sc,
+                     'h' if k.startswith('t') else 'cm')
+    else:
+        say('pendularFoam with the saturated zone, flat hearth:')
+        stops(name, 'alpha_l0 = 1, K = ' + K)
+    case = os.path.join('run', name)
+    wet, liquidOnly, pMax, nLiquidOnly = wet_cells(case)
+    with open(os.path.join(case, 'log.pendularFoam')) as f:
+        critical = f.read().count('near the critical point')
+    figs.add(name + '.TwetMax', wet, 'C')
+    figs.add(name + '.TliquidOnlyMax', liquidOnly, 'C')
+    figs.add(name + '.criticalRejections', critical, '-')
+    figs.add(name + '.pgMax', pMax, 'bar')
+    for t in (3600.0, 21600.0, 86400.0):
+        figs.add('%s.liquidOnlyCells_%gh' % (name, t/HOUR),
+                 nLiquidOnly.get(t), '-')
+    say('  %s: largest gas pressure at the writes %.2f bar; liquid-only'
+        ' cells at 1, 6, 24 h: %s' % (label, pMax, ', '.join(
+            str(nLiquidOnly.get(t)) for t in (3600.0, 21600.0, 86400.0))))
+    say('  %s: hottest cell holding liquid at the writes %.1f C, hottest'
+        ' liquid-only cell %.1f C; sub-steps rejected for liquid near the'
+        ' critical point: %d' % (label, wet, liquidOnly, critical))
+if hearthSat:
+    runsSat = [hearth[0]] + hearthSat
+    say('Flat hearth, the saturated soil with the saturated zone (MQ)')
+    say()
+    table('Reddening times', runsSat, rowsT)
+    table('100 C plateau and peaks', runsSat, rowsP)
+    table('Depths reached', runsSat, rowsD)
+    table('Largest relative imbalance (every write)', hearthSat, rowsB)
+say()
+
 # ---- the pit
 pit = [('ahcFoam, saturated (alpha_l0 = 1)',
         analyse('pit_ahc_1', 21600.0, ('2cm', '4cm'), False)),
