@@ -228,6 +228,9 @@ def check_patches(case, top):
     path, text = read(case, 'constant/polyMesh/boundary')
     found = dict((n, t) for n, t in re.findall(
         r'(\w+)\s*\{[^}]*?\btype\s+(\w+)\s*;', text))
+    if found.get(top) != 'patch':
+        fail(path, 'TOP = %s (the third argument, default plate): no patch '
+             'of type patch of that name; patches %s' % (top, found))
     expected = dict(PATCHES, **{top: 'patch'})
     if found != expected:
         fail(path, 'patches %s: this script writes the boundary conditions '
