@@ -303,23 +303,24 @@ def wet_cells(case):
     return wet, liquidOnly, pMax, nLiquidOnly
 
 
-hearthSat = []
-for K in ('1e-14', '1e-16'):
-    name = 'hearth_pendSat_1_%s' % K
-    if not os.path.isdir(os.path.join('run', name)):
-        continue
-    label = 'pendularFoam saturatedZone, alpha_l0 = 1, K = %s' % K
+def saturated_zone(name, label, endTime, sensors, peaks, ref, diffs):
+    """The figures of a saturated-zone run (hearth_pendSat_*, pit_pendSat_*)
+    if it reaches endTime, with DIFFS (figure keys) minus REF (the
+    saturated ahcFoam column's), or where it stops; then its liquid near
+    the critical point, largest gas pressure and liquid-only cells at the
+    hourly writes. Returns the figures (None if it stops)"""
+    r = None
     if reached_end(name):
-        r = analyse(name, 86400.0, SENS_H, True)
-        hearthSat.append((label, r))
-        sat = hearth[0][1]
-        for k, sc in (('d290_6h', 1), ('d290_end', 1), ('t290_3.5cm', 1/HOUR)):
+        r = analyse(name, endTime, sensors, peaks)
+        for k in diffs:
+            sc = 1/HOUR if k.startswith('t') else 1
             figs.add('%s.minusAhcSat.%s' % (name, k),
-                     None if r[k] is None else (r[k] - sat[k])*sc,
+                     None if r[k] is None or ref[k] is None
+                     else (r[k] - ref[k])*sc,
                      'h' if k.startswith('t') else 'cm')
     else:
-        say('pendularFoam with the saturated zone, flat hearth:')
-        stops(name, 'alpha_l0 = 1, K = ' + K)
+        say('pendularFoam with the saturated zone:')
+        stops(name, label)
     case = os.path.join('run', name)
     wet, liquidOnly, pMax, nLiquidOnly = wet_cells(case)
     with open(os.path.join(case, 'log.pendularFoam')) as f:
@@ -328,15 +329,31 @@ for K in ('1e-14', '1e-16'):
     figs.add(name + '.TliquidOnlyMax', liquidOnly, 'C')
     figs.add(name + '.criticalRejections', critical, '-')
     figs.add(name + '.pgMax', pMax, 'bar')
-    for t in (3600.0, 21600.0, 86400.0):
+    hours = [t for t in (3600.0, 21600.0, 86400.0) if t <= endTime]
+    for t in hours:
         figs.add('%s.liquidOnlyCells_%gh' % (name, t/HOUR),
                  nLiquidOnly.get(t), '-')
     say('  %s: largest gas pressure at the writes %.2f bar; liquid-only'
-        ' cells at 1, 6, 24 h: %s' % (label, pMax, ', '.join(
-            str(nLiquidOnly.get(t)) for t in (3600.0, 21600.0, 86400.0))))
+        ' cells at %s h: %s' % (label, pMax,
+                                ', '.join('%g' % (t/HOUR) for t in hours),
+                                ', '.join(str(nLiquidOnly.get(t))
+                                          for t in hours)))
     say('  %s: hottest cell holding liquid at the writes %.1f C, hottest'
         ' liquid-only cell %.1f C; sub-steps rejected for liquid near the'
         ' critical point: %d' % (label, wet, liquidOnly, critical))
+    return r
+
+
+hearthSat = []
+for K in ('1e-14', '1e-16'):
+    name = 'hearth_pendSat_1_%s' % K
+    if not os.path.isdir(os.path.join('run', name)):
+        continue
+    label = 'pendularFoam saturatedZone, alpha_l0 = 1, K = %s' % K
+    r = saturated_zone(name, label, 86400.0, SENS_H, True, hearth[0][1],
+                       ('d290_6h', 'd290_end', 't290_3.5cm'))
+    if r is not None:
+        hearthSat.append((label, r))
 if hearthSat:
     runsSat = [hearth[0]] + hearthSat
     say('Flat hearth, the saturated soil with the saturated zone (MQ)')
@@ -393,6 +410,30 @@ if pitMQ:
            ('100 C at 4 cm [h]', 't100_4cm', 1/HOUR, '%.2f'),
            ('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f')])
     table('Largest relative imbalance (every write)', pitMQ, rowsB)
+# The pit's saturated soil with the saturated zone (Allrun: runs
+# pit_pendSat_1_*, as hearth_pendSat_1_*): minus the saturated ahcFoam
+# column (pit_ahc_1, the seed's minimal duration: 290 C at 4 cm)
+pitSat = []
+for K in ('1e-14', '1e-16'):
+    name = 'pit_pendSat_1_%s' % K
+    if not os.path.isdir(os.path.join('run', name)):
+        continue
+    label = 'pendularFoam saturatedZone, pit, alpha_l0 = 1, K = %s' % K
+    r = saturated_zone(name, label, 21600.0, ('2cm', '4cm'), False,
+                       pit[0][1], ('t290_2cm', 't290_4cm', 'd290_6h',
+                                   'd100_6h'))
+    if r is not None:
+        pitSat.append((label, r))
+if pitSat:
+    table('Pit, the saturated soil with the saturated zone (MQ)',
+          [pit[0]] + pitSat,
+          [('290 C at 2 cm [h]', 't290_2cm', 1/HOUR, '%.2f'),
+           ('290 C at 4 cm [h]', 't290_4cm', 1/HOUR, '%.2f'),
+           ('100 C at 2 cm [h]', 't100_2cm', 1/HOUR, '%.2f'),
+           ('100 C at 4 cm [h]', 't100_4cm', 1/HOUR, '%.2f'),
+           ('TMax 290 C, 6 h [cm]', 'd290_6h', 1, '%.2f'),
+           ('TMax 100 C, 6 h [cm]', 'd100_6h', 1, '%.2f')])
+    table('Largest relative imbalance (every write)', pitSat, rowsB)
 say('pendularFoam, pit, alpha_l0 = 0.5, K = 1e-18 m2:')
 stops('pit_pend_0.5_1e-18', 'K = 1e-18')
 say()
