@@ -47,6 +47,8 @@ void Foam::coupledResidual::localJacobian
     const scalar* G0,
     scalar* y,
     const scalar* scale,
+    const label celli,
+    const label bFacei,
     scalarSquareMatrix& dGdy
 ) const
 {
@@ -56,7 +58,10 @@ void Foam::coupledResidual::localJacobian
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
-        const scalar h = step(yj, scale[j]);
+        // The derived residual's step, exactly representable around yj
+        volatile scalar yp =
+            yj + cellStep(celli, bFacei, y, j, step(yj, scale[j]));
+        const scalar h = yp - yj;
         y[j] = yj + h;
         G(y, Gp);
         if (central)
@@ -114,6 +119,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xo,
                 cellTermStepScales(celli),
+                celli, -1,
                 dOwn
             );
             system->addDiag(celli, dOwn);
@@ -140,6 +146,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xo,
                 xScale_.cdata(),
+                o, -1,
                 dOwn
             );
             localJacobian
@@ -148,6 +155,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xn,
                 xScale_.cdata(),
+                n, -1,
                 dNei
             );
             system->addFaceFlux(facei, dOwn, dNei);
@@ -198,6 +206,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xo,
                     xScale_.cdata(),
+                    o, -1,
                     dOwn
                 );
                 localJacobian
@@ -209,6 +218,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xn,
                     xScale_.cdata(),
+                    -1, bFacei,
                     dNei
                 );
             }
@@ -223,6 +233,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xo,
                     xScale_.cdata(),
+                    o, -1,
                     dOwn
                 );
             }
