@@ -362,46 +362,36 @@ void Foam::coupledResidual::cellResidual
     // bench/pendularNewton column500_newton): cellResidual 1.5 % of the
     // run's CPU, localWaterSolves 4.7 %, evaluate() 50 %: not worth a cache
     const label B = nBlock_;
-    const label nInternal = mesh_.nInternalFaces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     scalar F[64];
 
     cellTerm(celli, &x[B*celli], Rc);
-    for (const label facei : mesh_.cells()[celli])
-    {
-        if (facei < nInternal)
+    forCellFaces
+    (
+        celli,
+        [&](const label facei, const label nbr, const label bFacei)
         {
-            faceFlux(facei, &x[B*own[facei]], &x[B*nei[facei]], F);
-            const scalar sign = own[facei] == celli ? 1 : -1;
+            scalar sign = 1;
+            if (nbr >= 0)
+            {
+                faceFlux(facei, &x[B*own[facei]], &x[B*nei[facei]], F);
+                sign = own[facei] == celli ? 1 : -1;
+            }
+            else if (bFacei >= 0)
+            {
+                faceFlux(facei, &x[B*celli], &xNbr[B*bFacei], F);
+            }
+            else
+            {
+                boundaryFlux(facei, &x[B*celli], F);
+            }
             for (label k = 0; k < B; ++k)
             {
                 Rc[k] += sign*F[k];
             }
-            continue;
         }
-        const polyPatch& pp =
-            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)];
-        if (isA<emptyPolyPatch>(pp))
-        {
-            continue;
-        }
-        if (pp.coupled())
-        {
-            faceFlux
-            (
-                facei, &x[B*celli], &xNbr[B*(facei - nInternal)], F
-            );
-        }
-        else
-        {
-            boundaryFlux(facei, &x[B*celli], F);
-        }
-        for (label k = 0; k < B; ++k)
-        {
-            Rc[k] += F[k];
-        }
-    }
+    );
 }
 
 
