@@ -47,6 +47,8 @@ void Foam::coupledResidual::localJacobian
     const scalar* G0,
     scalar* y,
     const scalar* scale,
+    const label celli,
+    const label bFacei,
     scalarSquareMatrix& dGdy
 ) const
 {
@@ -56,7 +58,10 @@ void Foam::coupledResidual::localJacobian
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
-        const scalar h = step(yj, scale[j]);
+        // The derived residual's step, exactly representable around yj
+        volatile scalar yp =
+            yj + cellStep(celli, bFacei, y, j, step(yj, scale[j]));
+        const scalar h = yp - yj;
         y[j] = yj + h;
         G(y, Gp);
         if (central)
@@ -114,6 +119,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xo,
                 cellTermStepScales(celli),
+                celli, -1,
                 dOwn
             );
             system->addDiag(celli, dOwn);
@@ -140,6 +146,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xo,
                 xScale_.cdata(),
+                o, -1,
                 dOwn
             );
             localJacobian
@@ -148,6 +155,7 @@ void Foam::coupledResidual::evaluate
                 F,
                 xn,
                 xScale_.cdata(),
+                n, -1,
                 dNei
             );
             system->addFaceFlux(facei, dOwn, dNei);
@@ -198,6 +206,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xo,
                     xScale_.cdata(),
+                    o, -1,
                     dOwn
                 );
                 localJacobian
@@ -209,6 +218,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xn,
                     xScale_.cdata(),
+                    -1, bFacei,
                     dNei
                 );
             }
@@ -223,6 +233,7 @@ void Foam::coupledResidual::evaluate
                     F,
                     xo,
                     xScale_.cdata(),
+                    o, -1,
                     dOwn
                 );
             }
@@ -351,46 +362,36 @@ void Foam::coupledResidual::cellResidual
     // bench/pendularNewton column500_newton): cellResidual 1.5 % of the
     // run's CPU, localWaterSolves 4.7 %, evaluate() 50 %: not worth a cache
     const label B = nBlock_;
-    const label nInternal = mesh_.nInternalFaces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     scalar F[64];
 
     cellTerm(celli, &x[B*celli], Rc);
-    for (const label facei : mesh_.cells()[celli])
-    {
-        if (facei < nInternal)
+    forCellFaces
+    (
+        celli,
+        [&](const label facei, const label nbr, const label bFacei)
         {
-            faceFlux(facei, &x[B*own[facei]], &x[B*nei[facei]], F);
-            const scalar sign = own[facei] == celli ? 1 : -1;
+            scalar sign = 1;
+            if (nbr >= 0)
+            {
+                faceFlux(facei, &x[B*own[facei]], &x[B*nei[facei]], F);
+                sign = own[facei] == celli ? 1 : -1;
+            }
+            else if (bFacei >= 0)
+            {
+                faceFlux(facei, &x[B*celli], &xNbr[B*bFacei], F);
+            }
+            else
+            {
+                boundaryFlux(facei, &x[B*celli], F);
+            }
             for (label k = 0; k < B; ++k)
             {
                 Rc[k] += sign*F[k];
             }
-            continue;
         }
-        const polyPatch& pp =
-            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)];
-        if (isA<emptyPolyPatch>(pp))
-        {
-            continue;
-        }
-        if (pp.coupled())
-        {
-            faceFlux
-            (
-                facei, &x[B*celli], &xNbr[B*(facei - nInternal)], F
-            );
-        }
-        else
-        {
-            boundaryFlux(facei, &x[B*celli], F);
-        }
-        for (label k = 0; k < B; ++k)
-        {
-            Rc[k] += F[k];
-        }
-    }
+    );
 }
 
 

@@ -258,41 +258,32 @@ Foam::scalar Foam::pendularNewton::gasRoundOff
     scalar sum = mag(Wnew) + mag(Wnew - S[0]) + mag(Anew) + mag(Anew - S[1]);
 
     // The fluxes of its faces (as coupledResidual::cellResidual)
-    const polyMesh& mesh = res.mesh();
-    const label nInternal = mesh.nInternalFaces();
+    const labelList& own = res.mesh().faceOwner();
+    const labelList& nei = res.mesh().faceNeighbour();
     scalar F[3];
-    for (const label facei : mesh.cells()[c])
-    {
-        if (facei < nInternal)
+    res.forCellFaces
+    (
+        c,
+        [&](const label facei, const label nbr, const label bFacei)
         {
-            res.faceFlux
-            (
-                facei, &x[3*mesh.faceOwner()[facei]],
-                &x[3*mesh.faceNeighbour()[facei]], F
-            );
-        }
-        else
-        {
-            const polyPatch& pp =
-                mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)];
-            if (isA<emptyPolyPatch>(pp))
-            {
-                continue;
-            }
-            if (pp.coupled())
+            if (nbr >= 0)
             {
                 res.faceFlux
                 (
-                    facei, &x[3*c], &xNbr[3*(facei - nInternal)], F
+                    facei, &x[3*own[facei]], &x[3*nei[facei]], F
                 );
+            }
+            else if (bFacei >= 0)
+            {
+                res.faceFlux(facei, &x[3*c], &xNbr[3*bFacei], F);
             }
             else
             {
                 res.boundaryFlux(facei, &x[3*c], F);
             }
+            sum += mag(F[0]) + mag(F[1]);
         }
-        sum += mag(F[0]) + mag(F[1]);
-    }
+    );
     return gasFloorEps_*std::numeric_limits<scalar>::epsilon()*sum;
 }
 
@@ -309,13 +300,11 @@ bool Foam::pendularNewton::unknownsRoundOff
 {
     static const scalar eps = std::numeric_limits<scalar>::epsilon();
     static const scalar hRel = Foam::sqrt(eps);
-    const bool liquidOnly = res.phases()[c] == pendularResidual::liquidOnly;
-    // The scaled residuals' quantities: water, gas (total mass, or a
-    // liquidOnly cell's air), energy
-    auto combine = [liquidOnly](const scalar* R, scalar* G)
+    // The scaled residuals' quantities: water, gas (gasResidual), energy
+    auto combine = [&res, c](const scalar* R, scalar* G)
     {
         G[0] = R[0];
-        G[1] = liquidOnly ? R[1] : R[0] + R[1];
+        G[1] = gasResidual(res, c, R);
         G[2] = R[2];
     };
     scalar R0[3], G0[3];
@@ -365,26 +354,21 @@ bool Foam::pendularNewton::unknownsRoundOff
         }
     };
     addCell(&x[3*c]);
-    const polyMesh& mesh = res.mesh();
-    const label nInternal = mesh.nInternalFaces();
-    for (const label facei : mesh.cells()[c])
-    {
-        if (facei < nInternal)
+    res.forCellFaces
+    (
+        c,
+        [&](const label, const label nbr, const label bFacei)
         {
-            const label own = mesh.faceOwner()[facei];
-            const label nbr = own == c ? mesh.faceNeighbour()[facei] : own;
-            addCell(&x[3*nbr]);
-        }
-        else
-        {
-            const polyPatch& pp =
-                mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)];
-            if (pp.coupled())
+            if (nbr >= 0)
             {
-                addCell(&xNbr[3*(facei - nInternal)]);
+                addCell(&x[3*nbr]);
+            }
+            else if (bFacei >= 0)
+            {
+                addCell(&xNbr[3*bFacei]);
             }
         }
-    }
+    );
     for (label k = 0; k < 3; ++k)
     {
         finite = finite && std::isfinite(floor[k]);
@@ -671,10 +655,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         FixedList<scalar, 3> r(scalar(0));
         for (label c = 0; c < nCells; ++c)
         {
-            // (a liquidOnly cell's gas residual: its air's alone)
-            const scalar Rg =
-                res.phases()[c] == pendularResidual::liquidOnly
-              ? R[3*c + 1] : R[3*c] + R[3*c + 1];
+            const scalar Rg = gasResidual(res, c, &R[3*c]);
             r[0] = max(r[0], mag(R[3*c])/(sW[c]*WTolAbs_));
             r[1] = max(r[1], mag(Rg)/(sG[c]*pTol_));
             r[2] = max(r[2], mag(R[3*c + 2])/(sE[c]*TTol_));
@@ -705,8 +686,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             {
                 const bool liquidOnly =
                     res.phases()[c] == pendularResidual::liquidOnly;
-                const scalar Rg =
-                    mag(liquidOnly ? R[3*c + 1] : R[3*c] + R[3*c + 1]);
+                const scalar Rg = mag(gasResidual(res, c, &R[3*c]));
                 const scalar tol = sG[c]*pTol_;
                 if (Rg < tol || liquidOnly)
                 {
@@ -771,7 +751,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 const scalar Rc[3] =
                 {
                     mag(R[3*c]),
-                    mag(liquidOnly ? R[3*c + 1] : R[3*c] + R[3*c + 1]),
+                    mag(gasResidual(res, c, &R[3*c])),
                     mag(R[3*c + 2])
                 };
                 scalar tol[3] =

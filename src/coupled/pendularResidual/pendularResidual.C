@@ -219,6 +219,32 @@ const Foam::scalar* Foam::pendularResidual::cellTermStepScales
 }
 
 
+Foam::scalar Foam::pendularResidual::cellStep
+(
+    const label celli,
+    const label bFacei,
+    const scalar* y,
+    const label j,
+    const scalar h
+) const
+{
+    const label phase = celli >= 0 ? phase_[celli] : nbrPhase_[bFacei];
+    if (j != 2 || phase != bothPhases)
+    {
+        return h;
+    }
+    const scalar phi =
+        celli >= 0 ? medium_.porosity()[celli] : nbrPorosity_[bFacei];
+    // The gas room: the water a two-phase cell holds below S_l = 1
+    const scalar room = phi*medium_.rhoL() - y[2];
+    if (room <= 0 || h <= 0.5*room)
+    {
+        return h;
+    }
+    return -max(0.5*room, 1e-4*h);
+}
+
+
 bool Foam::pendularResidual::phaseConsistent
 (
     const label celli,
