@@ -346,6 +346,38 @@ check(nSerial > 0 and nPar > 0 and itPar <= 1.1*itSerial
       '2 ranks, default linear solver: %d steps, %d Newton iterations'
       ' (serial %d, %d; both read, at most 10 %% more)'
       % (nPar, itPar, nSerial, itSerial))
+# 3 ranks (simple, processor boundaries at 3.3 and 6.7 cm): LU by default
+# as on 2, the same steps and iterations (35 of 35 measured; at most 10 %
+# more), the fields at 20 s equal to serial within 1e-8 relative (a few
+# Newton tolerances, pTol/p = 1e-9, as the 2-rank fixed-step run at 200 s;
+# 9.8e-10 measured in p, T identical to the 10 digits written) and the
+# balances of the write as in 1
+log3, n3, it3 = newtonCost('shortParallel3_40')
+check('Saturated zone on 3 ranks: the Newton steps solved by LU (MUMPS) by'
+      ' default' in log3, '3 ranks: LU (MUMPS) by default, said in the log')
+check(n3 > 0 and it3 <= 1.1*itSerial and n3 <= 1.1*nSerial,
+      '3 ranks, default linear solver: %d steps, %d Newton iterations'
+      ' (serial %d, %d; at most 10 %% more)' % (n3, it3, nSerial, itSerial))
+worst3, where3 = 0, ''
+for name in ['T', 'p', 'pl', 'W', 'alphaL', 'Xair']:
+    s = field('short_40', '20', name)
+    q = field('shortParallel3_40', '20', name)
+    e = max(abs(a - b) for a, b in zip(s, q))/max(abs(a) for a in s)
+    if len(s) != len(q) or e >= worst3:
+        worst3, where3 = (e if len(s) == len(q) else 1), name
+check(worst3 <= 1e-8, '3 ranks = serial at 20 s: max |diff|/max = %.3g'
+      ' (%s; at most 1e-8)' % (worst3, where3))
+blocks = re.findall(
+    r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
+    r'.*?imbalance\s+=\s+(\S+) \(relative (\S+)\)', log3, re.S)
+worst = 0
+for what, t, content, imb, rel in blocks:
+    imb, rel = float(imb), float(rel)
+    scale = abs(imb/rel) if rel != 0 else 0
+    worst = max(worst, abs(imb)/max(1e-10*scale, newtonFloor[what]))
+check(len(blocks) == 3 and worst <= 1,
+      '3 ranks: %d balances (1 write), worst |imbalance| %.3g of its bound'
+      % (len(blocks), worst))
 hint = 'linear solves of this sub-step\'s Newton steps stopped short'
 check(hint not in log, '2 ranks, default: no hint of inexact linear solves')
 log, nBj, itBj = newtonCost('shortBjacobi_40')

@@ -381,6 +381,7 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
     }
 
     createKsp(relTol, tolerance, maxIter);
+    checkFactorSolver(dict);
 
     KSPType kspType;
     PC pcObj;
@@ -412,6 +413,92 @@ void Foam::blockSystem::createKsp
         "KSPSetTolerances"
     );
     petscSession::check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+}
+
+
+void Foam::blockSystem::checkFactorSolver(const dictionary& dict) const
+{
+    PC pc;
+    petscSession::check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+    PetscBool isLu = PETSC_FALSE;
+    PetscBool isCholesky = PETSC_FALSE;
+    petscSession::check
+    (
+        PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &isLu),
+        "PetscObjectTypeCompare"
+    );
+    petscSession::check
+    (
+        PetscObjectTypeCompare
+        (
+            reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &isCholesky
+        ),
+        "PetscObjectTypeCompare"
+    );
+    if (!isLu && !isCholesky)
+    {
+        return;
+    }
+    const MatFactorType factor = isLu ? MAT_FACTOR_LU : MAT_FACTOR_CHOLESKY;
+
+    // The solver type set by the options (null: PETSc's choice, the first
+    // one registered for the matrix type)
+    MatSolverType asked = nullptr;
+    petscSession::check
+    (
+        PCFactorGetMatSolverType(pc, &asked), "PCFactorGetMatSolverType"
+    );
+    PetscBool available = PETSC_FALSE;
+    petscSession::check
+    (
+        MatGetFactorAvailable(A_, asked, factor, &available),
+        "MatGetFactorAvailable"
+    );
+    if (available)
+    {
+        return;
+    }
+
+    // The factor solver types of PETSc 3.18 that this build has for A_
+    MatType matType;
+    petscSession::check(MatGetType(A_, &matType), "MatGetType");
+    wordList have;
+    for
+    (
+        const char* t :
+        {
+            "mumps", "superlu_dist", "superlu", "petsc", "umfpack",
+            "cholmod", "klu", "strumpack", "pastix", "mkl_pardiso",
+            "mkl_cpardiso"
+        }
+    )
+    {
+        PetscBool ok = PETSC_FALSE;
+        petscSession::check
+        (
+            MatGetFactorAvailable(A_, t, factor, &ok),
+            "MatGetFactorAvailable"
+        );
+        if (ok)
+        {
+            have.append(word(t));
+        }
+    }
+    FatalIOErrorInFunction(dict)
+        << "preconditioner " << (isLu ? "lu" : "cholesky") << ": this PETSc"
+        << " has no " << (isLu ? "LU" : "Cholesky") << " factorisation by '"
+        << (asked ? asked : "(PETSc's default)") << "' for a " << matType
+        << " matrix on " << Pstream::nProcs() << " rank(s) (-"
+        << prefix_.c_str() << "pc_factor_mat_solver_type: MUMPS by default in"
+        << " parallel, set"
+        << " by petscOptions or PETSC_OPTIONS). Factor solver types"
+        << " available here for this matrix: " << flatOutput(have) << nl
+        << "    Valid choices: " << dict.dictName() << " { preconditioner lu;"
+        << " } with one of these (petscOptions \"-pc_factor_mat_solver_type"
+        << " TYPE\"), or preconditioner bjacobi, asm (subPreconditioner ilu"
+        << " or lu: the blocks of each rank factored by PETSc itself), none,"
+        << " or fieldsplit (with matrix aij)"
+        << exit(FatalIOError);
 }
 
 
