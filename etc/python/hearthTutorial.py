@@ -285,6 +285,25 @@ def pendular_balances(log):
     return out
 
 
+def worst_pendular_imbalances(log, airHeld=False):
+    """Largest |relative imbalance| of the water, air and energy balances
+    over every block of a pendularFoam log -> dict 'water', 'air',
+    'energy' (0 without blocks); with airHeld, also 'air_held': the
+    largest |air imbalance| relative to the air in the domain (the air's
+    flows are ~0: its own relative figure is no measure)."""
+    worst = dict.fromkeys(('water', 'air', 'energy'), 0.0)
+    if airHeld:
+        worst['air_held'] = 0.0
+    for b in pendular_balances(log):
+        for kind in ('water', 'air', 'energy'):
+            worst[kind] = max(worst[kind], abs(b[kind]['relative']))
+        if airHeld:
+            worst['air_held'] = max(worst['air_held'],
+                                    abs(b['air']['imbalance']
+                                        / b['air']['inDomain']))
+    return worst
+
+
 # --------------------------------------------------------------------------
 # hearthAlteration
 
