@@ -196,14 +196,11 @@ def energy_balance_blocks(log):
     return blocks
 
 
-def energy_balance(log, block=-1):
-    """One energy balance block of an ahcFoam log (default: the last) ->
-    dict: time, in_<patch> [J], in, stored, latent, sensible, imbalance,
-    relative, liquidWater [kg] (the entries present)."""
-    blocks = energy_balance_blocks(log)
-    if not blocks:
-        return None
-    text = '\n'.join(blocks[block])
+def parse_energy_balance(block):
+    """One block of energy_balance_blocks -> dict: time, in_<patch> [J],
+    in, stored, latent, sensible, imbalance, relative, liquidWater [kg]
+    (the entries present)."""
+    text = '\n'.join(block)
     res = {'time': float(re.search(r'at t = (\S+)', text).group(1))}
     for m in re.finditer(r'heat in through (\S+) = (\S+)', text):
         res['in_' + m.group(1)] = float(m.group(2))
@@ -219,6 +216,21 @@ def energy_balance(log, block=-1):
         if m:
             res[key] = float(m.group(1))
     return res
+
+
+def energy_balances(log):
+    """Every energy balance block of an ahcFoam log, parsed
+    (parse_energy_balance), in order."""
+    return [parse_energy_balance(b) for b in energy_balance_blocks(log)]
+
+
+def energy_balance(log, block=-1):
+    """One energy balance block of an ahcFoam log (default: the last),
+    parsed (parse_energy_balance); None if the log has none."""
+    blocks = energy_balance_blocks(log)
+    if not blocks:
+        return None
+    return parse_energy_balance(blocks[block])
 
 
 def latent_heat(path=None):
