@@ -8,10 +8,12 @@ A tutorial script imports it with
     import hearthTutorial as ht
 
 It reads what hearthFoam writes (thermocouple CSV files, probes, axis
-profiles, the energy balance of an ahcFoam log, hearthAlteration's summary)
-and writes `figures.csv`: one row name,value,unit per result figure a
-tutorial's README states, which the test of the tutorial
-(tests/tutorial<Name>/) compares with the README.
+profiles, the balance blocks of ahcFoam and pendularFoam logs,
+hearthAlteration's summary; its balance readers are the project's only
+ones: tests/lib/hearthcheck.py uses them too) and writes `figures.csv`:
+one row name,value,unit per result figure a tutorial's README states,
+which the test of the tutorial (tests/tutorial<Name>/) compares with the
+README.
 """
 
 import csv
