@@ -8,10 +8,12 @@ A tutorial script imports it with
     import hearthTutorial as ht
 
 It reads what hearthFoam writes (thermocouple CSV files, probes, axis
-profiles, the energy balance of an ahcFoam log, hearthAlteration's summary)
-and writes `figures.csv`: one row name,value,unit per result figure a
-tutorial's README states, which the test of the tutorial
-(tests/tutorial<Name>/) compares with the README.
+profiles, the balance blocks of ahcFoam and pendularFoam logs,
+hearthAlteration's summary; its balance readers are the project's only
+ones: tests/lib/hearthcheck.py uses them too) and writes `figures.csv`:
+one row name,value,unit per result figure a tutorial's README states,
+which the test of the tutorial (tests/tutorial<Name>/) compares with the
+README.
 """
 
 import csv
@@ -196,14 +198,11 @@ def energy_balance_blocks(log):
     return blocks
 
 
-def energy_balance(log, block=-1):
-    """One energy balance block of an ahcFoam log (default: the last) ->
-    dict: time, in_<patch> [J], in, stored, latent, sensible, imbalance,
-    relative, liquidWater [kg] (the entries present)."""
-    blocks = energy_balance_blocks(log)
-    if not blocks:
-        return None
-    text = '\n'.join(blocks[block])
+def parse_energy_balance(block):
+    """One block of energy_balance_blocks -> dict: time, in_<patch> [J],
+    in, stored, latent, sensible, imbalance, relative, liquidWater [kg]
+    (the entries present)."""
+    text = '\n'.join(block)
     res = {'time': float(re.search(r'at t = (\S+)', text).group(1))}
     for m in re.finditer(r'heat in through (\S+) = (\S+)', text):
         res['in_' + m.group(1)] = float(m.group(2))
@@ -219,6 +218,21 @@ def energy_balance(log, block=-1):
         if m:
             res[key] = float(m.group(1))
     return res
+
+
+def energy_balances(log):
+    """Every energy balance block of an ahcFoam log, parsed
+    (parse_energy_balance), in order."""
+    return [parse_energy_balance(b) for b in energy_balance_blocks(log)]
+
+
+def energy_balance(log, block=-1):
+    """One energy balance block of an ahcFoam log (default: the last),
+    parsed (parse_energy_balance); None if the log has none."""
+    blocks = energy_balance_blocks(log)
+    if not blocks:
+        return None
+    return parse_energy_balance(blocks[block])
 
 
 def latent_heat(path=None):
@@ -283,6 +297,25 @@ def pendular_balances(log):
                 float(m.group(2))
         out.append(res)
     return out
+
+
+def worst_pendular_imbalances(log, airHeld=False):
+    """Largest |relative imbalance| of the water, air and energy balances
+    over every block of a pendularFoam log -> dict 'water', 'air',
+    'energy' (0 without blocks); with airHeld, also 'air_held': the
+    largest |air imbalance| relative to the air in the domain (the air's
+    flows are ~0: its own relative figure is no measure)."""
+    worst = dict.fromkeys(('water', 'air', 'energy'), 0.0)
+    if airHeld:
+        worst['air_held'] = 0.0
+    for b in pendular_balances(log):
+        for kind in ('water', 'air', 'energy'):
+            worst[kind] = max(worst[kind], abs(b[kind]['relative']))
+        if airHeld:
+            worst['air_held'] = max(worst['air_held'],
+                                    abs(b['air']['imbalance']
+                                        / b['air']['inDomain']))
+    return worst
 
 
 # --------------------------------------------------------------------------

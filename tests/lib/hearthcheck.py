@@ -23,22 +23,19 @@ REJECTED_SLACK = 2
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', '..', 'etc', 'python'))
 from hearthTutorial import read_probes, read_internal_field  # noqa: E402,F401
+from hearthTutorial import pendular_balances, energy_balances  # noqa: E402
 
 
 def read_energy_balances(log):
-    """Every 'imbalance ... (relative r)' of an ahcFoam log -> list of
-    (stored change, imbalance, relative)."""
-    out = []
-    stored = None
-    with open(log) as f:
-        for line in f:
-            m = re.search(r'stored change\s+=\s+(\S+)', line)
-            if m:
-                stored = float(m.group(1))
-            m = re.search(r'imbalance\s+=\s+(\S+) \(relative (\S+)\)', line)
-            if m:
-                out.append((stored, float(m.group(1)), float(m.group(2))))
-    return out
+    """Every balance of an ahcFoam or pendularFoam log (hearthTutorial's
+    readers) -> list of (stored change, imbalance, relative), in order:
+    per report, ahcFoam's energy; pendularFoam's water, air, energy."""
+    blocks = pendular_balances(log)
+    if blocks:
+        return [(b[k].get('stored'), b[k]['imbalance'], b[k]['relative'])
+                for b in blocks for k in ('water', 'air', 'energy')]
+    return [(b.get('stored'), b['imbalance'], b['relative'])
+            for b in energy_balances(log) if 'relative' in b]
 
 
 def worst_relative_imbalance(log):
@@ -47,19 +44,14 @@ def worst_relative_imbalance(log):
     scale (stored change and flows out, the solver's 'relative') and the
     amount in the domain (the air's flows are ~0: its own relative figure
     is 1 at 2e-20 kg)."""
-    worst, domain, found = 0.0, None, False
-    with open(log) as f:
-        for line in f:
-            m = re.search(r'in the domain\s+=\s+(\S+)', line)
-            if m:
-                domain = abs(float(m.group(1)))
-            m = re.search(r'imbalance\s+=\s+(\S+) \(relative (\S+)\)', line)
-            if m:
-                imb = abs(float(m.group(1)))
-                rel = abs(float(m.group(2)))
-                scale = imb/rel if rel > 0 else 0.0
-                worst = max(worst, imb/max(scale, domain or 0.0, 1e-300))
-                found = True
+    worst, found = 0.0, False
+    for b in pendular_balances(log):
+        for d in (b['water'], b['air'], b['energy']):
+            imb, rel = abs(d['imbalance']), abs(d['relative'])
+            scale = imb/rel if rel > 0 else 0.0
+            worst = max(worst, imb/max(scale, abs(d.get('inDomain', 0.0)),
+                                       1e-300))
+            found = True
     if not found:
         raise ValueError('no balance report in ' + log)
     return worst

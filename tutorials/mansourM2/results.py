@@ -142,7 +142,8 @@ def analyse(name, endTime, cycles=False):
             r['xi_' + key] = 10*ht.interpolate(ts, xs, float(b))
             figs.add('%s.xi_%s' % (name, key), r['xi_' + key], 'mm')
     if not ahc:
-        for kind, v in balances(os.path.join(case, "log.pendularFoam")).items():
+        for kind, v in ht.worst_pendular_imbalances(
+                os.path.join(case, "log.pendularFoam"), airHeld=True).items():
             r['balance_' + kind] = v
             figs.add('%s.balance_%s' % (name, kind), v, '-')
     else:
@@ -150,32 +151,6 @@ def analyse(name, endTime, cycles=False):
         r['balance_energy'] = abs(b['relative'])
         figs.add('%s.balance_energy' % name, r['balance_energy'], '-')
     return r
-
-
-def balances(log):
-    """Largest |relative imbalance| of the water, air and energy balances
-    of a pendularFoam log (every block)"""
-    import re
-    worst = {'water': 0.0, 'air': 0.0, 'energy': 0.0, 'air_held': 0.0}
-    kind = None
-    held = None
-    with open(log) as f:
-        for line in f:
-            m = re.match(r'(Water|Air|Energy) balance at t', line)
-            if m:
-                kind = m.group(1).lower()
-                continue
-            m = re.search(r'in the domain\s+= (\S+)', line)
-            if m and kind:
-                held = float(m.group(1))
-            m = re.search(r'imbalance\s+= (\S+) \(relative (\S+)\)', line)
-            if m and kind:
-                worst[kind] = max(worst[kind], abs(float(m.group(2))))
-                if kind == 'air':
-                    worst['air_held'] = max(worst['air_held'],
-                                            abs(float(m.group(1))/held))
-                kind = None
-    return worst
 
 
 fmt = ht.fmt

@@ -87,7 +87,8 @@ def analyse(name):
             r['peak_' + sen] = ht.peak(t, T)[0]
     log = os.path.join(case, 'log.pendularFoam')
     if os.path.exists(log):
-        r.update(balances(log))
+        r.update(('balance_' + k, v) for k, v in
+                 ht.worst_pendular_imbalances(log).items())
     else:
         b = ht.energy_balance(os.path.join(case, 'log.ahcFoam'))
         r['balance_energy'] = abs(b['relative'])
@@ -96,25 +97,6 @@ def analyse(name):
             else '-' if k.startswith('balance') else 'C'
         figs.add('%s.%s' % (name, k), v, unit)
     return r
-
-
-def balances(log):
-    """Largest |relative imbalance| of the water, air and energy balances
-    of a pendularFoam log (every block)."""
-    import re
-    worst = {'balance_water': 0.0, 'balance_air': 0.0, 'balance_energy': 0.0}
-    kind = None
-    with open(log) as f:
-        for line in f:
-            m = re.match(r'(Water|Air|Energy) balance at t', line)
-            if m:
-                kind = 'balance_' + m.group(1).lower()
-                continue
-            m = re.search(r'imbalance\s+= \S+ \(relative (\S+)\)', line)
-            if m and kind:
-                worst[kind] = max(worst[kind], abs(float(m.group(1))))
-                kind = None
-    return worst
 
 
 nCells = int(open('run/nCells').read())

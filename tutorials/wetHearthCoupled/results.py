@@ -34,24 +34,6 @@ def say(s=''):
     out.append(s)
 
 
-def balances(log):
-    """Largest |relative imbalance| of the water, air and energy balances
-    of a pendularFoam log (every block)."""
-    worst = {'water': 0.0, 'air': 0.0, 'energy': 0.0}
-    kind = None
-    with open(log) as f:
-        for line in f:
-            m = re.match(r'(Water|Air|Energy) balance at t', line)
-            if m:
-                kind = m.group(1).lower()
-                continue
-            m = re.search(r'imbalance\s+= \S+ \(relative (\S+)\)', line)
-            if m and kind:
-                worst[kind] = max(worst[kind], abs(float(m.group(1))))
-                kind = None
-    return worst
-
-
 def profile_at(case, t):
     """(depth [cm], TMax [C]) down the column at time t"""
     d = os.path.join(case, 'postProcessing', 'axisProfile', '%g' % t)
@@ -95,7 +77,7 @@ def analyse(name, endTime, sensors, peaks):
             figs.add('%s.%s' % (name, k), v, 'cm')
     log = os.path.join(case, 'log.pendularFoam')
     if os.path.exists(log):
-        for kind, v in balances(log).items():
+        for kind, v in ht.worst_pendular_imbalances(log).items():
             r['balance_' + kind] = v
             figs.add('%s.balance_%s' % (name, kind), v, '-')
     else:
@@ -263,7 +245,8 @@ with open(os.path.join('run', name, 'log.pendularFoam')) as f:
 say('  alpha_l0 = 0.9, tortuosity 1e-3 (Fick diffusion nearly off): runs'
     ' to t = %.0f s' % float(times[-1]))
 figs.add(name + '.end', float(times[-1]), 's')
-for kind, v in balances(os.path.join('run', name, 'log.pendularFoam')).items():
+for kind, v in ht.worst_pendular_imbalances(
+        os.path.join('run', name, 'log.pendularFoam')).items():
     figs.add('%s.balance_%s' % (name, kind), v, '-')
 say('pendularFoam (MQ) near saturation, flat hearth:')
 for name, label in stoppedMQ:
