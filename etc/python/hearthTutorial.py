@@ -269,13 +269,20 @@ def pendular_balances(log):
     with open(log) as f:
         text = f.read()
     out = []
-    for block in re.split(r'\n(?=Water balance at t = )', text)[1:]:
+    blocks = re.split(r'\n(?=Water balance at t = )', text)[1:]
+    for i, block in enumerate(blocks):
         block = block.split('\n\n')[0]
         res = {'time': float(re.match(r'Water balance at t = (\S+)',
                                       block).group(1))}
-        for what in ('Water', 'Air', 'Energy'):
-            m = re.search(what + r' balance at t = .*?\n((?:    .*\n?)*)',
-                          block)
+        sections = [re.search(what + r' balance at t = .*?\n((?:    .*\n?)*)',
+                              block) for what in ('Water', 'Air', 'Energy')]
+        if not all(m and re.search(r'imbalance', m.group(1))
+                   for m in sections):
+            if i == len(blocks) - 1:
+                break       # the log ends within its last write's balances
+            raise SystemExit('%s: the balances at t = %g are incomplete'
+                             % (log, res['time']))
+        for what, m in zip(('Water', 'Air', 'Energy'), sections):
             d = {}
             for k, v in re.findall(r'out through (\S+) = (\S+)', m.group(1)):
                 d['out_' + k] = float(v)
