@@ -4,7 +4,6 @@
 
 #include "coupledResidual.H"
 #include "syncTools.H"
-#include "emptyPolyPatch.H"
 
 #include <limits>
 
@@ -58,13 +57,17 @@ void Foam::coupledResidual::localJacobian
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
-        // The derived residual's step, exactly representable around yj
-        volatile scalar yp =
-            yj + cellStep(celli, bFacei, y, j, step(yj, scale[j]));
+        // The derived residual's step, exactly representable around yj;
+        // a step that cellStep reversed (the local functions are not
+        // differentiable within it on the forward side) is one-sided in
+        // both schemes: a central pair would cross to that side
+        const scalar hj = cellStep(celli, bFacei, y, j, step(yj, scale[j]));
+        const bool twoSided = central && hj > 0;
+        volatile scalar yp = yj + hj;
         const scalar h = yp - yj;
         y[j] = yj + h;
         G(y, Gp);
-        if (central)
+        if (twoSided)
         {
             y[j] = yj - h;
             G(y, Gm);
@@ -73,7 +76,7 @@ void Foam::coupledResidual::localJacobian
         for (label i = 0; i < B; ++i)
         {
             dGdy(i, j) =
-                central ? (Gp[i] - Gm[i])/(2*h) : (Gp[i] - G0[i])/h;
+                twoSided ? (Gp[i] - Gm[i])/(2*h) : (Gp[i] - G0[i])/h;
         }
     }
 }

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pendularNewton.H"
-#include "emptyPolyPatch.H"
 #include <cmath>
 #include <limits>
 

@@ -647,11 +647,11 @@ int main(int argc, char *argv[])
 
     // 4d. The W column of a two-phase cell at 1 - S_l = 1e-8 (issue 14):
     //     van Genuchten's p_c (n = 2) has dp_c/dS ~ (1 - S)^(-1/2) there;
-    //     the forward step sqrt(eps) W (6e-7 kg/m3 here) exceeds the gas
-    //     room phi (rho_l - rho_v1)(1 - S) (4e-7) and crossed S = 1.
+    //     the forward step sqrt(eps) W (3.9e-6 kg/m3 here) exceeds the
+    //     gas room phi (rho_l - rho_v1)(1 - S) (2.6e-6) and crossed S = 1.
     //     pendularResidual::cellStep's backward step of half the room
     //     against a backward difference of the full residual with a step
-    //     of 1e-2 of the room (the wet side; truncation of the singular
+    //     of 1e-2 of the room (the dry side; truncation of the singular
     //     part (1 - S)^(1/2): 0.25 %): the secant of (1 - S)^(1/2) over
     //     [u, 1.5 u] is 0.90 of its tangent at u: 0.101 at most in the
     //     singular part, 0.12 with the reference's truncation and a
@@ -710,7 +710,7 @@ int main(int argc, char *argv[])
             << Foam::sqrt(std::numeric_limits<scalar>::epsilon())*xw[g]
             << " kg/m3; relative error of the W column " << err/scale
             << endl;
-        checkAbs("W column at 1 - S = 1e-8 vs wet-side FD (rel)",
+        checkAbs("W column at 1 - S = 1e-8 vs dry-side FD (rel)",
             err/max(scale, VSMALL), 0, 0.12);
     }
 
