@@ -474,7 +474,13 @@ void Foam::pendularMedium::checkInitialState
         }
         dictionary fieldDict;
         fieldDict.name() = alphaL.objectPath();
-        if (T[celli] > dryOutTemperature_ - criticalMargin)
+        // The guard's threshold (liquidNearCritical): a state the solver
+        // wrote, its last liquid evaporated to round-off, restarts
+        if
+        (
+            T[celli] > dryOutTemperature_ - criticalMargin
+         && a > alphaLCritical
+        )
         {
             FatalIOErrorInFunction(fieldDict)
                 << "Field '" << alphaL.name() << "' (keyword"
@@ -483,7 +489,7 @@ void Foam::pendularMedium::checkInitialState
                 << criticalMargin << " K of the critical point ("
                 << dryOutTemperature_ << " K), in file "
                 << alphaL.objectPath() << nl
-                << "    Valid: alphaL = 0 above "
+                << "    Valid: alphaL <= " << alphaLCritical << " above "
                 << dryOutTemperature_ - criticalMargin
                 << " K (the liquid vanishes at the critical point)"
                 << exit(FatalIOError);
