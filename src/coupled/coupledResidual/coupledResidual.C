@@ -358,8 +358,10 @@ void Foam::coupledResidual::cellResidual
     scalar* Rc
 ) const
 {
-    // The terms of evaluate() that touch cell celli, in the same order (not
-    // evaluate() itself: the cell term and the fluxes of its faces only).
+    // The terms of evaluate() that touch cell celli (not evaluate()
+    // itself: the cell term and the fluxes of its faces only), summed in
+    // the order of mesh.cells()[celli], not evaluate()'s face order: the
+    // sums agree to rounding, not bit for bit.
     // Each call recomputes the states of celli's neighbours, unchanged
     // between the calls of one cell's local solve; measured (perf, 2026-12-02,
     // bench/pendularNewton column500_newton): cellResidual 1.5 % of the
