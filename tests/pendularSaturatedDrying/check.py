@@ -82,12 +82,12 @@ newtonFloor = {
     'Air': 0.26*0.029*1e-4*V/(8.31*293),
     'Energy': 3e6*1e-7*V,
 }
-runs = ['cells_10', 'cells_20', 'cells_40', 'serialFixed_20',
-        'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20',
-        'step1_20', 'step0.5_20', 'lowK_20', 'lowK_40', 'lowK_80',
-        'bubble_40']
-for run in runs:
-    log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
+
+
+def balanceBounds(log):
+    """(number of balances, worst |imbalance|/bound, largest relative
+    imbalance) of a pendularFoam log's text, the bound max(1e-10 of its
+    scale, the Newton floor of its quantity)"""
     blocks = re.findall(
         r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
         r'.*?imbalance\s+=\s+(\S+) \(relative (\S+)\)', log, re.S)
@@ -96,12 +96,21 @@ for run in runs:
     for what, t, content, imb, rel in blocks:
         imb, rel = float(imb), float(rel)
         scale = abs(imb/rel) if rel != 0 else 0
-        bound = max(1e-10*scale, newtonFloor[what])
-        worst = max(worst, abs(imb)/bound)
+        worst = max(worst, abs(imb)/max(1e-10*scale, newtonFloor[what]))
         worstRel = max(worstRel, abs(rel))
-    check(len(blocks) == 9 and worst <= 1,
+    return len(blocks), worst, worstRel
+
+
+runs = ['cells_10', 'cells_20', 'cells_40', 'serialFixed_20',
+        'parallelFixed_20', 'storage10_20', 'seed1e-6_20', 'outflow_20',
+        'step1_20', 'step0.5_20', 'lowK_20', 'lowK_40', 'lowK_80',
+        'bubble_40']
+for run in runs:
+    log = open(os.path.join(scratch, run, 'log.pendularFoam')).read()
+    n, worst, worstRel = balanceBounds(log)
+    check(n == 9 and worst <= 1,
           '%s: %d balances (3 writes), worst |imbalance| %.3g of its bound'
-          ' (largest relative %.3g)' % (run, len(blocks), worst, worstRel))
+          ' (largest relative %.3g)' % (run, n, worst, worstRel))
 
 # 8. The graded 40-cell column (30 um top cell) to 150 s, liquid-only: its
 # balances at 50, 100, 150 s as in 1, and its sub-steps rejected at
@@ -115,17 +124,10 @@ for run in runs:
 # accepted on the floor only within it, the floor capped at 1e3
 # tolerances: 18 measured
 log = open(os.path.join(scratch, 'graded_40', 'log.pendularFoam')).read()
-blocks = re.findall(
-    r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
-    r'.*?imbalance\s+=\s+(\S+) \(relative (\S+)\)', log, re.S)
-worst = 0
-for what, t, content, imb, rel in blocks:
-    imb, rel = float(imb), float(rel)
-    scale = abs(imb/rel) if rel != 0 else 0
-    worst = max(worst, abs(imb)/max(1e-10*scale, newtonFloor[what]))
-check(len(blocks) == 9 and worst <= 1,
+n, worst, _ = balanceBounds(log)
+check(n == 9 and worst <= 1,
       'graded_40 (to 150 s): %d balances (3 writes), worst |imbalance| %.3g'
-      ' of its bound' % (len(blocks), worst))
+      ' of its bound' % (n, worst))
 nMaxIter = len(re.findall(r'rejected after \d+ iterations \(nonlinear'
                           r' iterations not converged\)', log))
 check(nMaxIter <= 25,
@@ -367,17 +369,10 @@ for name in ['T', 'p', 'pl', 'W', 'alphaL', 'Xair']:
         worst3, where3 = (e if len(s) == len(q) else 1), name
 check(worst3 <= 1e-8, '3 ranks = serial at 20 s: max |diff|/max = %.3g'
       ' (%s; at most 1e-8)' % (worst3, where3))
-blocks = re.findall(
-    r'(Water|Air|Energy) balance at t = (\S+) s .*?in the domain\s+=\s+(\S+)'
-    r'.*?imbalance\s+=\s+(\S+) \(relative (\S+)\)', log3, re.S)
-worst = 0
-for what, t, content, imb, rel in blocks:
-    imb, rel = float(imb), float(rel)
-    scale = abs(imb/rel) if rel != 0 else 0
-    worst = max(worst, abs(imb)/max(1e-10*scale, newtonFloor[what]))
-check(len(blocks) == 3 and worst <= 1,
+n, worst, _ = balanceBounds(log3)
+check(n == 3 and worst <= 1,
       '3 ranks: %d balances (1 write), worst |imbalance| %.3g of its bound'
-      % (len(blocks), worst))
+      % (n, worst))
 hint = 'linear solves of this sub-step\'s Newton steps stopped short'
 check(hint not in log, '2 ranks, default: no hint of inexact linear solves')
 log, nBj, itBj = newtonCost('shortBjacobi_40')
