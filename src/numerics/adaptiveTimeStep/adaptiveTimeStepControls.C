@@ -165,6 +165,28 @@ void Foam::adaptiveTimeStepControls::read()
 }
 
 
+Foam::scalar Foam::adaptiveTimeStepControls::stepFactor
+(
+    const scalar lastMaxChange,
+    const label lastIterations
+) const
+{
+    scalar factor =
+        min
+        (
+            maxDeltaTGrowth_,
+            maxDeltaTemperature_/max(lastMaxChange, SMALL)
+        );
+
+    if (lastIterations > maxIter_/2)
+    {
+        factor = min(factor, 0.7);
+    }
+
+    return factor;
+}
+
+
 void Foam::adaptiveTimeStepControls::setDeltaT
 (
     Time& runTime,
@@ -178,19 +200,10 @@ void Foam::adaptiveTimeStepControls::setDeltaT
         return;
     }
 
-    scalar factor =
-        min
-        (
-            maxDeltaTGrowth_,
-            maxDeltaTemperature_/max(lastMaxChange, SMALL)
-        );
-
-    if (lastIterations > maxIter_/2)
-    {
-        factor = min(factor, 0.7);
-    }
-
-    runTime.setDeltaT(min(factor*lastDeltaT, maxDeltaT_));
+    runTime.setDeltaT
+    (
+        min(stepFactor(lastMaxChange, lastIterations)*lastDeltaT, maxDeltaT_)
+    );
 }
 
 

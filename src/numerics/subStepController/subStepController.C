@@ -22,7 +22,9 @@ Foam::subStepController::subStepController
     nextStepFactor_(GREAT),
     DeltaT_(deltaT0),
     elapsed_(0),
+    dtNominal_(deltaT0),
     dt_(deltaT0),
+    nAcceptedSinceRejection_(0),
     nRejected_(0),
     nSubSteps_(0),
     totalIter_(0),
@@ -54,7 +56,9 @@ void Foam::subStepController::start(const scalar DeltaT)
 {
     DeltaT_ = DeltaT;
     elapsed_ = 0;
+    dtNominal_ = DeltaT;
     dt_ = DeltaT;
+    nAcceptedSinceRejection_ = 0;
     nRejected_ = 0;
     nSubSteps_ = 0;
     totalIter_ = 0;
@@ -66,7 +70,7 @@ bool Foam::subStepController::loop()
 {
     if (elapsed_ < DeltaT_*(1 - 1e-10))
     {
-        dt_ = min(dt_, DeltaT_ - elapsed_);
+        dt_ = min(dtNominal_, DeltaT_ - elapsed_);
         return true;
     }
     return false;
@@ -83,8 +87,21 @@ void Foam::subStepController::accept
     maxChange_ = max(maxChange_, maxChange);
     elapsed_ += dt_;
     ++nSubSteps_;
-    lastDeltaT_ = dt_;
+    // After a rejection, the controller's sub-step, not the remainder it
+    // was cut to at the step's end (which may be any fraction of it once
+    // it has grown): the next step is sized from it
+    lastDeltaT_ = nRejected_ > 0 ? dtNominal_ : dt_;
     lastIterations_ = iter;
+
+    if (nRejected_ > 0 && ++nAcceptedSinceRejection_ >= holdSubSteps)
+    {
+        dtNominal_ =
+            min
+            (
+                DeltaT_,
+                dtNominal_*max(scalar(1), controls_.stepFactor(maxChange, iter))
+            );
+    }
 }
 
 
@@ -92,14 +109,16 @@ void Foam::subStepController::limitNextStep(const scalar factor)
 {
     nextStepFactor_ = factor;
     // The remaining sub-steps of this step too
-    dt_ = min(dt_, factor*lastDeltaT_);
+    dtNominal_ = min(dtNominal_, factor*lastDeltaT_);
 }
 
 
 bool Foam::subStepController::reject(const label iter, const string& reason)
 {
     totalIter_ += iter;
-    dt_ *= 0.5;
+    dtNominal_ = 0.5*dt_;
+    dt_ = dtNominal_;
+    nAcceptedSinceRejection_ = 0;
     ++nRejected_;
 
     Info<< "    step rejected after " << iter << " iterations";

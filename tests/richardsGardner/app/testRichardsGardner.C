@@ -245,7 +245,10 @@ int main(int argc, char *argv[])
         << "outflow " << res.outflow(S) << nl
         << nChecks - nFailed << " of " << nChecks << " checks passed"
         << nl << "End" << endl;
-    return nFailed ? 1 : 0;
+    // Not a return from main: in v1912 argList's destructor ends the
+    // process with Pstream::exit(0), which would hide failed checks
+    Pstream::exit(nFailed > 0 ? 1 : 0);
+    return 0;
 }
 
 
