@@ -25,6 +25,7 @@ Foam::subStepController::subStepController
     dtNominal_(deltaT0),
     dt_(deltaT0),
     nAcceptedSinceRejection_(0),
+    grown_(false),
     nRejected_(0),
     nSubSteps_(0),
     totalIter_(0),
@@ -59,6 +60,7 @@ void Foam::subStepController::start(const scalar DeltaT)
     dtNominal_ = DeltaT;
     dt_ = DeltaT;
     nAcceptedSinceRejection_ = 0;
+    grown_ = false;
     nRejected_ = 0;
     nSubSteps_ = 0;
     totalIter_ = 0;
@@ -87,20 +89,21 @@ void Foam::subStepController::accept
     maxChange_ = max(maxChange_, maxChange);
     elapsed_ += dt_;
     ++nSubSteps_;
-    // After a rejection, the controller's sub-step, not the remainder it
-    // was cut to at the step's end (which may be any fraction of it once
-    // it has grown): the next step is sized from it
-    lastDeltaT_ = nRejected_ > 0 ? dtNominal_ : dt_;
+    // Once grown in this step, the controller's sub-step, not the remainder it was cut
+    // to at the step's end (any fraction of it): the next step is sized
+    // from it. Else the sub-step itself (halved ones add up to the step;
+    // a local error estimate, limitNextStep, was made on it)
+    lastDeltaT_ = grown_ ? dtNominal_ : dt_;
     lastIterations_ = iter;
 
     if (nRejected_ > 0 && ++nAcceptedSinceRejection_ >= holdSubSteps)
     {
-        dtNominal_ =
-            min
-            (
-                DeltaT_,
-                dtNominal_*max(scalar(1), controls_.stepFactor(maxChange, iter))
-            );
+        const scalar factor = controls_.stepFactor(maxChange, iter);
+        if (factor > 1)
+        {
+            dtNominal_ = min(DeltaT_, factor*dtNominal_);
+            grown_ = true;
+        }
     }
 }
 
