@@ -17,11 +17,12 @@ Foam::pendularNewton::pendularNewton
     const scalar WTolAbs,
     const scalar dryingFactor,
     const label maxIter,
-    const bool verbose
+    const bool verbose,
+    const string& linearChosenBy
 )
 :
     mesh_(mesh),
-    system_(mesh, 3, linearDict),
+    system_(mesh, 3, linearDict, linearChosenBy),
     TTol_(TTol),
     pTol_(pTol),
     WTolAbs_(WTolAbs),
