@@ -67,6 +67,20 @@ Foam::blockSystem::subPreconditionerTypeNames
 namespace
 {
 
+// True if the PETSc option -<prefix><name> is set
+bool hasOption(const std::string& prefix, const std::string& name)
+{
+    const std::string full("-" + prefix + name);
+    PetscBool set = PETSC_FALSE;
+    Foam::petscSession::check
+    (
+        PetscOptionsHasName(nullptr, nullptr, full.c_str(), &set),
+        "PetscOptionsHasName"
+    );
+    return set;
+}
+
+
 // Set the PETSc option -<prefix><name> unless it is already set (from
 // PETSC_OPTIONS, which so takes precedence)
 void setDefaultOption
@@ -77,13 +91,7 @@ void setDefaultOption
 )
 {
     const std::string full("-" + prefix + name);
-    PetscBool set = PETSC_FALSE;
-    Foam::petscSession::check
-    (
-        PetscOptionsHasName(nullptr, nullptr, full.c_str(), &set),
-        "PetscOptionsHasName"
-    );
-    if (!set)
+    if (!hasOption(prefix, name))
     {
         Foam::petscSession::check
         (
@@ -263,7 +271,11 @@ void Foam::blockSystem::createMatrix(const matrixType type)
 }
 
 
-void Foam::blockSystem::createSolver(const dictionary& dict)
+void Foam::blockSystem::createSolver
+(
+    const dictionary& dict,
+    const string& chosenBy
+)
 {
     checkedRead::checkKeywords
     (
@@ -329,8 +341,62 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
     prefix_ = dict.dictName() + "_";
     const std::string& prefix = prefix_;
 
+    // Where the preconditioner and the factor solver type come from, for
+    // checkFactorSolver's message: PETSC_OPTIONS (set before any of
+    // these), else the keyword petscOptions, else the keywords (written
+    // in dict, or set there by the caller: chosenBy), else the defaults
+    const std::string env
+    (
+        "the environment variable PETSC_OPTIONS (-" + prefix
+    );
+    std::string pcFrom
+    (
+        hasOption(prefix, "pc_type") ? env + "pc_type)" : ""
+    );
+    std::string factorFrom
+    (
+        hasOption(prefix, "pc_factor_mat_solver_type")
+      ? env + "pc_factor_mat_solver_type)" : ""
+    );
+
     // The user's PETSc options first (they win over the keywords)
     setUserOptions(dict, prefix);
+
+    const std::string inFile(" in " + dict.name());
+    const std::string petscOptions
+    (
+        "petscOptions \""
+      + dict.getOrDefault<string>("petscOptions", "") + "\"" + inFile
+    );
+    if (pcFrom.empty() && hasOption(prefix, "pc_type"))
+    {
+        pcFrom = petscOptions;
+    }
+    if (factorFrom.empty() && hasOption(prefix, "pc_factor_mat_solver_type"))
+    {
+        factorFrom = petscOptions;
+    }
+    if (pcFrom.empty())
+    {
+        pcFrom =
+            "preconditioner " + preconditionerTypeNames[pc]
+          + (
+                !chosenBy.empty()
+              ? " chosen by the solver, not written" + inFile + " ("
+              + chosenBy + ")"
+              : dict.found("preconditioner")
+              ? inFile
+              : " (blockSystem's default: no keyword preconditioner"
+              + inFile + ")"
+            );
+    }
+    if (factorFrom.empty())
+    {
+        factorFrom =
+            pc == preconditionerType::lu && Pstream::parRun()
+          ? "MUMPS, blockSystem's default for lu in parallel"
+          : "PETSc's default for the matrix type";
+    }
 
     setDefaultOption(prefix, "ksp_type", solverTypeNames[solver]);
     setDefaultOption(prefix, "ksp_gmres_restart", std::to_string(restart));
@@ -380,8 +446,10 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
             break;
     }
 
-    createKsp(relTol, tolerance, maxIter);
-    checkFactorSolver(dict);
+    checkFactorSolver
+    (
+        dict, pcFrom, factorFrom, createKsp(relTol, tolerance, maxIter)
+    );
 
     KSPType kspType;
     PC pcObj;
@@ -393,7 +461,7 @@ void Foam::blockSystem::createSolver(const dictionary& dict)
 }
 
 
-void Foam::blockSystem::createKsp
+int Foam::blockSystem::createKsp
 (
     const scalar relTol,
     const scalar tolerance,
@@ -412,33 +480,187 @@ void Foam::blockSystem::createKsp
         KSPSetTolerances(ksp_, relTol, tolerance, PETSC_DEFAULT, maxIter),
         "KSPSetTolerances"
     );
-    petscSession::check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+    return KSPSetFromOptions(ksp_);
 }
 
 
-void Foam::blockSystem::checkFactorSolver(const dictionary& dict) const
+bool Foam::blockSystem::canFactor
+(
+    const char* solverType,
+    const int factorType,
+    std::string& why
+) const
 {
+    const MatFactorType ftype = MatFactorType(factorType);
+    why.clear();
+
+    // Registration first (MatGetFactorAvailable, no object made): a type
+    // this PETSc lacks for the matrix type
+    PetscBool registered = PETSC_FALSE;
+    petscSession::check
+    (
+        MatGetFactorAvailable(A_, solverType, ftype, &registered),
+        "MatGetFactorAvailable"
+    );
+    bool ok = registered;
+    reduce(ok, andOp<bool>());
+    if (!ok)
+    {
+        why = "not registered for this matrix type";
+        return false;
+    }
+
+    // Then a factorisation itself (PETSc 3.18 registers MUMPS's Cholesky
+    // for baij matrices and refuses it only when the factor matrix is made:
+    // "Cannot use PETSc BAIJ matrices with Cholesky, use SBAIJ or AIJ
+    // matrix", mumps.c; registration alone passed that combination, which
+    // failed at the first solve), as PCSetUp_LU and PCSetUp_Cholesky do
+    // it: MatGetFactor, the symbolic and the numeric factorisation, of a
+    // probe of A_'s type and block size, one identity block per rank (A_
+    // is not assembled yet, and MatGetFactor refuses an unassembled
+    // matrix). Each step on every rank, the next only if every rank
+    // passed (the steps are collective)
+    Mat P = nullptr, F = nullptr;
+    IS row = nullptr, col = nullptr;
+    MatType matType;
+    petscSession::check(MatGetType(A_, &matType), "MatGetType");
+    const PetscInt B = nBlock_;
+    const PetscInt one = 1, zero = 0;
+    List<PetscScalar> identity(B*B, Zero);
+    for (label i = 0; i < B; ++i)
+    {
+        identity[i*B + i] = 1;
+    }
+    petscSession::check(MatCreate(PETSC_COMM_WORLD, &P), "MatCreate");
+    petscSession::check
+    (
+        MatSetSizes(P, B, B, PETSC_DETERMINE, PETSC_DETERMINE),
+        "MatSetSizes"
+    );
+    petscSession::check(MatSetType(P, matType), "MatSetType");
+    petscSession::check(MatSetBlockSize(P, B), "MatSetBlockSize");
+    petscSession::check
+    (
+        MatXAIJSetPreallocation(P, B, &one, &zero, nullptr, nullptr),
+        "MatXAIJSetPreallocation"
+    );
+    const PetscInt r = Pstream::myProcNo();
+    petscSession::check
+    (
+        MatSetValuesBlocked
+        (
+            P, 1, &r, 1, &r, identity.cdata(), INSERT_VALUES
+        ),
+        "MatSetValuesBlocked"
+    );
+    petscSession::check
+    (
+        MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin"
+    );
+    petscSession::check
+    (
+        MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd"
+    );
+
+    MatFactorInfo info;
+    petscSession::check
+    (
+        MatFactorInfoInitialize(&info), "MatFactorInfoInitialize"
+    );
+    const bool isLu = ftype == MAT_FACTOR_LU;
+    auto step = [&](const PetscErrorCode ierr, const char* call)
+    {
+        bool passed = ierr == 0;
+        if (!passed)
+        {
+            why = std::string(call) + ": " + petscSession::lastError();
+        }
+        reduce(passed, andOp<bool>());
+        if (!passed && why.empty())
+        {
+            why = std::string(call) + " failed on another rank";
+        }
+        ok = ok && passed;
+    };
+    step(MatGetFactor(P, solverType, ftype, &F), "MatGetFactor");
+    if (ok)
+    {
+        PetscBool useOrdering = PETSC_FALSE;
+        step
+        (
+            MatFactorGetCanUseOrdering(F, &useOrdering),
+            "MatFactorGetCanUseOrdering"
+        );
+        if (ok && useOrdering)
+        {
+            step
+            (
+                MatGetOrdering(P, MATORDERINGNATURAL, &row, &col),
+                "MatGetOrdering"
+            );
+        }
+    }
+    if (ok)
+    {
+        step
+        (
+            isLu
+          ? MatLUFactorSymbolic(F, P, row, col, &info)
+          : MatCholeskyFactorSymbolic(F, P, row, &info),
+            isLu ? "MatLUFactorSymbolic" : "MatCholeskyFactorSymbolic"
+        );
+    }
+    if (ok)
+    {
+        step
+        (
+            isLu
+          ? MatLUFactorNumeric(F, P, &info)
+          : MatCholeskyFactorNumeric(F, P, &info),
+            isLu ? "MatLUFactorNumeric" : "MatCholeskyFactorNumeric"
+        );
+    }
+    if (row) ISDestroy(&row);
+    if (col) ISDestroy(&col);
+    if (F) MatDestroy(&F);
+    MatDestroy(&P);
+    return ok;
+}
+
+
+void Foam::blockSystem::checkFactorSolver
+(
+    const dictionary& dict,
+    const std::string& pcFrom,
+    const std::string& factorFrom,
+    const int setFromOptions
+) const
+{
+    // KSPSetFromOptions's failure (its message kept before any other call)
+    const std::string optionsError
+    (
+        setFromOptions ? petscSession::lastError() : ""
+    );
     PC pc;
     petscSession::check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-    PetscBool isLu = PETSC_FALSE;
-    PetscBool isCholesky = PETSC_FALSE;
+    PetscBool isFactor = PETSC_FALSE;
     petscSession::check
     (
-        PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &isLu),
-        "PetscObjectTypeCompare"
-    );
-    petscSession::check
-    (
-        PetscObjectTypeCompare
+        PetscObjectTypeCompareAny
         (
-            reinterpret_cast<PetscObject>(pc), PCCHOLESKY, &isCholesky
+            reinterpret_cast<PetscObject>(pc), &isFactor, PCLU, PCCHOLESKY,
+            ""
         ),
-        "PetscObjectTypeCompare"
+        "PetscObjectTypeCompareAny"
     );
-    if (!isLu && !isCholesky)
+    if (!isFactor)
     {
+        petscSession::check(setFromOptions, "KSPSetFromOptions");
         return;
     }
+    PCType pcType;
+    petscSession::check(PCGetType(pc, &pcType), "PCGetType");
+    const bool isLu = word(pcType) == PCLU;
     const MatFactorType factor = isLu ? MAT_FACTOR_LU : MAT_FACTOR_CHOLESKY;
 
     // The solver type set by the options (null: PETSc's choice, the first
@@ -448,57 +670,84 @@ void Foam::blockSystem::checkFactorSolver(const dictionary& dict) const
     (
         PCFactorGetMatSolverType(pc, &asked), "PCFactorGetMatSolverType"
     );
-    PetscBool available = PETSC_FALSE;
-    petscSession::check
-    (
-        MatGetFactorAvailable(A_, asked, factor, &available),
-        "MatGetFactorAvailable"
-    );
-    if (available)
+    // The factorisation refused when the options were read (PETSc makes
+    // the factor matrix there when the solver type is given: MUMPS's
+    // Cholesky on baij), or by canFactor (when it is PETSc's default, the
+    // factor matrix is made at the first solve)
+    std::string why;
+    if (setFromOptions)
+    {
+        why = "KSPSetFromOptions: " + optionsError;
+    }
+    else if (canFactor(asked, factor, why))
     {
         return;
     }
 
-    // The factor solver types of PETSc 3.18 that this build has for A_
+    // The factor solver types of PETSc 3.18 (petscmat.h's MATSOLVER...
+    // but MATLAB's and the GPUs') that this build can factor A_'s type by
     MatType matType;
     petscSession::check(MatGetType(A_, &matType), "MatGetType");
     wordList have;
+    std::string whyNot;
     for
     (
         const char* t :
         {
-            "mumps", "superlu_dist", "superlu", "petsc", "umfpack",
-            "cholmod", "klu", "strumpack", "pastix", "mkl_pardiso",
-            "mkl_cpardiso"
+            MATSOLVERMUMPS, MATSOLVERSUPERLU_DIST, MATSOLVERSUPERLU,
+            MATSOLVERPETSC, MATSOLVERUMFPACK, MATSOLVERCHOLMOD, MATSOLVERKLU,
+            MATSOLVERSTRUMPACK, MATSOLVERPASTIX, MATSOLVERMKL_PARDISO,
+            MATSOLVERMKL_CPARDISO, MATSOLVERSCALAPACK, MATSOLVERELEMENTAL,
+            MATSOLVERSPARSEELEMENTAL, MATSOLVERSPQR, MATSOLVERLUSOL,
+            MATSOLVERESSL, MATSOLVERBAS
         }
     )
     {
-        PetscBool ok = PETSC_FALSE;
-        petscSession::check
-        (
-            MatGetFactorAvailable(A_, t, factor, &ok),
-            "MatGetFactorAvailable"
-        );
-        if (ok)
+        if (canFactor(t, factor, whyNot))
         {
             have.append(word(t));
         }
     }
+    wordList otherPcs;
+    for (const word& name : preconditionerTypeNames.names())
+    {
+        if (name != "lu")
+        {
+            otherPcs.append(name);
+        }
+    }
     FatalIOErrorInFunction(dict)
-        << "preconditioner " << (isLu ? "lu" : "cholesky") << ": this PETSc"
-        << " has no " << (isLu ? "LU" : "Cholesky") << " factorisation by '"
-        << (asked ? asked : "(PETSc's default)") << "' for a " << matType
-        << " matrix on " << Pstream::nProcs() << " rank(s) (-"
-        << prefix_.c_str() << "pc_factor_mat_solver_type: MUMPS by default in"
-        << " parallel, set"
-        << " by petscOptions or PETSC_OPTIONS). Factor solver types"
-        << " available here for this matrix: " << flatOutput(have) << nl
-        << "    Valid choices: " << dict.dictName() << " { preconditioner lu;"
-        << " } with one of these (petscOptions \"-pc_factor_mat_solver_type"
-        << " TYPE\"), or preconditioner bjacobi, asm (subPreconditioner ilu"
-        << " or lu: the blocks of each rank factored by PETSc itself), none,"
-        << " or fieldsplit (with matrix aij)"
-        << exit(FatalIOError);
+        << (isLu ? "LU" : "Cholesky") << " factorisation (PETSc pc_type "
+        << pcType << ", from " << pcFrom.c_str() << ") by '"
+        << (asked ? asked : "(PETSc's default)") << "' (from "
+        << factorFrom.c_str() << "): this PETSc cannot factor a " << matType
+        << " matrix so on " << Pstream::nProcs() << " rank(s): "
+        << why.c_str() << nl
+        << "    Factor solver types available here for this matrix: ";
+    if (have.empty())
+    {
+        FatalIOError<< "none";
+    }
+    else
+    {
+        FatalIOError<< flatOutput(have);
+    }
+    FatalIOError<< nl
+        << "    Valid choices: "
+        << (
+               isLu
+             ? "preconditioner lu" : "petscOptions \"-pc_type cholesky\""
+           )
+        << " in " << dict.name()
+        << " with one of these (petscOptions \"-pc_factor_mat_solver_type"
+        << " TYPE\" there, or -" << prefix_.c_str()
+        << "pc_factor_mat_solver_type TYPE in PETSC_OPTIONS), or another"
+        << " preconditioner " << flatOutput(otherPcs) << " (bjacobi and asm"
+        << " with subPreconditioner "
+        << flatOutput(subPreconditionerTypeNames.names())
+        << ", fieldsplit with matrix "
+        << matrixTypeNames[matrixType::aij]
+        << ")" << exit(FatalIOError);
 }
 
 
@@ -558,7 +807,8 @@ Foam::blockSystem::blockSystem
 (
     const polyMesh& mesh,
     const label nBlock,
-    const dictionary& dict
+    const dictionary& dict,
+    const string& chosenBy
 )
 :
     mesh_(mesh),
@@ -584,7 +834,7 @@ Foam::blockSystem::blockSystem
             << exit(FatalError);
     }
     setNeighbourCells();
-    createSolver(dict);
+    createSolver(dict, chosenBy);
 }
 
 
@@ -862,7 +1112,10 @@ Foam::solverPerformance Foam::blockSystem::solve
             "KSPGetTolerances"
         );
         petscSession::check(KSPDestroy(&ksp_), "KSPDestroy");
-        createKsp(rtol, abstol, maxits);
+        petscSession::check
+        (
+            createKsp(rtol, abstol, maxits), "KSPSetFromOptions"
+        );
     }
 
     const bool converged = reason > 0 && finite;

@@ -57,14 +57,13 @@ void Foam::coupledResidual::localJacobian
     for (label j = 0; j < B; ++j)
     {
         const scalar yj = y[j];
-        // The derived residual's step, exactly representable around yj;
-        // a step that cellStep reversed (the local functions are not
-        // differentiable within it on the forward side) is one-sided in
-        // both schemes: a central pair would cross to that side
-        const scalar hj = cellStep(celli, bFacei, y, j, step(yj, scale[j]));
-        const bool twoSided = central && hj > 0;
-        volatile scalar yp = yj + hj;
-        const scalar h = yp - yj;
+        // The derived residual's step (differenceStep); a step that
+        // cellStep reversed (the local functions are not differentiable
+        // within it on the forward side) is one-sided in both schemes: a
+        // central pair would cross to that side
+        const scalar h =
+            differenceStep(celli, bFacei, y, j, step(yj, scale[j]));
+        const bool twoSided = central && h > 0;
         y[j] = yj + h;
         G(y, Gp);
         if (twoSided)
@@ -296,6 +295,21 @@ Foam::coupledResidual::coupledResidual
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::coupledResidual::differenceStep
+(
+    const label celli,
+    const label bFacei,
+    const scalar* y,
+    const label j,
+    const scalar h
+) const
+{
+    const scalar yj = y[j];
+    volatile scalar yp = yj + cellStep(celli, bFacei, y, j, h);
+    return yp - yj;
+}
+
 
 Foam::tmp<Foam::scalarField> Foam::coupledResidual::neighbourStates
 (

@@ -17,11 +17,12 @@ Foam::pendularNewton::pendularNewton
     const scalar WTolAbs,
     const scalar dryingFactor,
     const label maxIter,
-    const bool verbose
+    const bool verbose,
+    const string& linearChosenBy
 )
 :
     mesh_(mesh),
-    system_(mesh, 3, linearDict),
+    system_(mesh, 3, linearDict, linearChosenBy),
     TTol_(TTol),
     pTol_(pTol),
     WTolAbs_(WTolAbs),
@@ -321,10 +322,13 @@ bool Foam::pendularNewton::unknownsRoundOff
         return false;
     }
 
-    // The unknowns y[0..2] of a cell (in x or in xNbr): each perturbed by
-    // its forward step, the change of cell c's residual times epsilon
-    // |y_j| / h_j
-    auto addCell = [&](scalar* y)
+    // The unknowns y[0..2] of a cell (in x or in xNbr; celli the cell, or
+    // -1 and bFacei across a coupled patch): each perturbed by the
+    // Jacobian's step rule (coupledResidual::differenceStep from the
+    // forward step sqrt(eps) |y_j|: reversed, towards the dry side, where
+    // it would cross S_l = 1 in a two-phase cell, pendularResidual::
+    // cellStep), the change of cell c's residual times epsilon |y_j|/|h_j|
+    auto addCell = [&](scalar* y, const label celli, const label bFacei)
     {
         for (label j = 0; j < 3; ++j)
         {
@@ -335,9 +339,13 @@ bool Foam::pendularNewton::unknownsRoundOff
             {
                 continue;
             }
-            volatile scalar yp = yj + hRel*magY;
-            const scalar h = yp - yj;
-            y[j] = yp;
+            const scalar h =
+                res.differenceStep(celli, bFacei, y, j, hRel*magY);
+            if (h == 0)
+            {
+                continue;
+            }
+            y[j] = yj + h;
             scalar R1[3], G1[3];
             res.cellResidual(c, x, xNbr, R1);
             y[j] = yj;
@@ -347,12 +355,13 @@ bool Foam::pendularNewton::unknownsRoundOff
                 finite = finite && std::isfinite(G1[k]);
                 if (finite)
                 {
-                    floor[k] += gasFloorEps_*mag(G1[k] - G0[k])/h*eps*magY;
+                    floor[k] +=
+                        gasFloorEps_*mag(G1[k] - G0[k])/mag(h)*eps*magY;
                 }
             }
         }
     };
-    addCell(&x[3*c]);
+    addCell(&x[3*c], c, -1);
     res.forCellFaces
     (
         c,
@@ -360,11 +369,11 @@ bool Foam::pendularNewton::unknownsRoundOff
         {
             if (nbr >= 0)
             {
-                addCell(&x[3*nbr]);
+                addCell(&x[3*nbr], nbr, -1);
             }
             else if (bFacei >= 0)
             {
-                addCell(&xNbr[3*bFacei]);
+                addCell(&xNbr[3*bFacei], -1, bFacei);
             }
         }
     );

@@ -130,6 +130,12 @@ void Foam::petscSession::checkActive(const string& who)
 }
 
 
+const std::string& Foam::petscSession::lastError()
+{
+    return lastPetscError;
+}
+
+
 void Foam::petscSession::check(const int ierr, const char* call)
 {
     if (ierr)
@@ -139,7 +145,7 @@ void Foam::petscSession::check(const int ierr, const char* call)
         FatalErrorInFunction
             << "PETSc call " << call << " failed with error " << ierr
             << ": " << (text ? text : "(no message)") << nl
-            << "    " << lastPetscError.c_str()
+            << "    " << lastError().c_str()
             << exit(FatalError);
     }
 }

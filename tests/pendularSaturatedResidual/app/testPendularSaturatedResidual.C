@@ -28,6 +28,10 @@ Description
        cells' own terms against central differences of cellTerm: dW/dp_l,
        dA/dp_l, dE/dp_l within 1e-6 (the step sqrt(eps)/c_s; with the
        two-phase step they were wrong by 1 and 1.8);
+    4e. the round-off floor (pendularNewton::unknownsRoundOff) of the
+       liquidOnly neighbour of 4d's cell from the forward-difference
+       Jacobian's entries, 10 eps sum_j |dR/dx_j| |x_j| (1e-4; the old
+       forward step crossing S_l = 1: 0.49);
     4c. Newton on a liquid-only sub-step of 1e-3 s (every cell liquidOnly,
        p_l 100 Pa above p_ref): quadratic, one step from the solution
        shifted by s (1000 Pa, 1 K) leaves an error of p_l falling at least
@@ -712,6 +716,88 @@ int main(int argc, char *argv[])
             << endl;
         checkAbs("W column at 1 - S = 1e-8 vs dry-side FD (rel)",
             err/max(scale, VSMALL), 0, 0.12);
+
+        // 4e. The round-off floor of a liquidOnly neighbour L of c
+        //     (pendularNewton::unknownsRoundOff, issue 14) at the same
+        //     state: 10 eps sum_j |dR_L/dx_j| |x_j| over L's and its
+        //     neighbours' unknowns (x_j + p_ref for the pressure), here
+        //     with dR_L/dx_j the entries of the forward-difference
+        //     Jacobian just assembled (its W column of c certified above
+        //     against the dry side). The same step rule (differenceStep,
+        //     the backward half-room step in W of c), the steps of the
+        //     other unknowns differ (sqrt(eps) |x_j| against sqrt(eps)
+        //     max(|x_j|, scale)): relative truncation and round-off of the
+        //     differences ~1e-7, the terms' sum within 1e-4 (2.2e-9
+        //     measured). The forward step sqrt(eps) W crossing S_l = 1
+        //     (the old rule, planted once): 0.49 (every floor 1.49 times
+        //     the Jacobian's)
+        label L = -1;
+        for (const label facei : mesh.cells()[c])
+        {
+            if (facei < mesh.nInternalFaces() && L < 0)
+            {
+                const label o = mesh.faceOwner()[facei];
+                const label nb = o == c ? mesh.faceNeighbour()[facei] : o;
+                if (phases[nb] == pendularResidual::liquidOnly)
+                {
+                    L = nb;
+                }
+            }
+        }
+        pendularNewton newtonF
+        (
+            mesh, mesh.solutionDict().subDict("coupled"), 1e-6, 1e-3, 1e-8,
+            0.1, 50
+        );
+        scalarField xr(xw);
+        scalarField xNbr(resF.neighbourStates(xr));
+        scalar floor[3] = {0, 0, 0};
+        const bool hasFloor =
+            newtonF.unknownsRoundOff(resF, L, xr, xNbr, pRef, floor);
+        checkTrue("liquidOnly neighbour of c: a finite floor", hasFloor,
+            hasFloor, 1, "bool");
+        checkAbs("unknownsRoundOff restores x", max(mag(xr - xw)), 0, 0);
+        labelList cols;
+        cols.append(L);
+        for (const label facei : mesh.cells()[L])
+        {
+            if (facei < mesh.nInternalFaces())
+            {
+                const label o = mesh.faceOwner()[facei];
+                cols.append(o == L ? mesh.faceNeighbour()[facei] : o);
+            }
+        }
+        scalar ref[3] = {0, 0, 0};
+        const scalar eps = std::numeric_limits<scalar>::epsilon();
+        for (const label cj : cols)
+        {
+            for (label j = 0; j < 3; ++j)
+            {
+                const label gj = 3*cj + j;
+                const scalar magX =
+                    j == 1
+                  ? max(mag(xw[gj]), mag(xw[gj] + pRef)) : mag(xw[gj]);
+                e = Zero;
+                e[gj] = 1;
+                sysW.multiply(e, Je);
+                for (label k = 0; k < 3; ++k)
+                {
+                    ref[k] += 10*eps*mag(Je[3*L + k])*magX;
+                }
+            }
+        }
+        scalar floorErr = 0;
+        for (label k = 0; k < 3; ++k)
+        {
+            floorErr =
+                max(floorErr, mag(floor[k] - ref[k])/max(ref[k], VSMALL));
+        }
+        Info<< "cell " << L << " (liquidOnly, beside " << c << "): floor ("
+            << floor[0] << " " << floor[1] << " " << floor[2]
+            << "), from the Jacobian (" << ref[0] << " " << ref[1] << " "
+            << ref[2] << ")" << endl;
+        checkAbs("round-off floor beside S = 1 vs Jacobian (rel)",
+            floorErr, 0, 1e-4);
     }
 
     // 4c. Newton on a liquid-only step: every cell liquidOnly, p_l 100 Pa
