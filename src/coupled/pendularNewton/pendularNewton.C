@@ -200,6 +200,7 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const pendularResidual& res,
     scalarField& x,
     const scalarField& sW,
+    const bool reverse,
     label& nNonFinite
 ) const
 {
@@ -209,8 +210,10 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const labelList& phase = res.phases();
     label nLocal = 0;
     nNonFinite = 0;
-    for (label c = 0; c < x.size()/3; ++c)
+    const label nCells = x.size()/3;
+    for (label i = 0; i < nCells; ++i)
     {
+        const label c = reverse ? nCells - 1 - i : i;
         const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
         if
         (
@@ -218,6 +221,43 @@ Foam::label Foam::pendularNewton::localWaterSolves
          && Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
         )
         {
+            const label solved =
+                solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr());
+            if (solved > 0)
+            {
+                ++nLocal;
+            }
+            else if (solved < 0)
+            {
+                ++nNonFinite;
+            }
+        }
+        else if
+        (
+            phase[c] == pendularResidual::bothPhases
+         && Wk > 0 && x[3*c + 2] >= nearKink_*Wk
+        )
+        {
+            // A wet cell next to the front: a face neighbour (on this
+            // rank) near or below its kink
+            bool front = false;
+            res.forCellFaces
+            (
+                c,
+                [&](const label, const label nbr, const label)
+                {
+                    if (nbr >= 0 && phase[nbr] == pendularResidual::bothPhases)
+                    {
+                        front = front
+                         || x[3*nbr + 2]
+                          < nearKink_*medium.kinkWater(phi[nbr], x[3*nbr]);
+                    }
+                }
+            );
+            if (!front)
+            {
+                continue;
+            }
             const label solved =
                 solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr());
             if (solved > 0)
@@ -621,8 +661,27 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // converged iterate of a sub-step needs none: on the column of
         // tests/pendularNewton 1688 Jacobians of 6271 are not assembled,
         // no CPU saving measurable on a loaded machine, 2.24 s and 2.35 s;
-        // the states of the cells at x are cached for it)
-        res.residual(x, R);
+        // the states of the cells at x are cached for it). An iterate that
+        // cannot end the sub-step, the first or one whose update chopped,
+        // projected, solved locally or switched cells (the acceptance
+        // tests and the chord step below all require none), gets its
+        // Jacobian with its residual (coupledResidual::jacobian returns
+        // R(x), the same evaluation, bit for bit): the residual is not
+        // evaluated twice at the same x (issue 13; bench/pendularNewton's
+        // column500_newton: 852 of its 965 Jacobians; the results bit for
+        // bit those of the two calls, CPU -3 % measured alone).
+        // Not at maxIter_ (no step follows); an iterate that then fails
+        // (non-finite residual, divergence) wastes one assembly
+        const bool jacobianNow =
+            iter < maxIter_ && (iter == 0 || nChopped + nProjected > 0);
+        if (jacobianNow)
+        {
+            R = res.jacobian(x, system_);
+        }
+        else
+        {
+            res.residual(x, R);
+        }
         if (nanResidual_.fire() && R.size())
         {
             R[0] = std::numeric_limits<scalar>::quiet_NaN();
@@ -908,7 +967,10 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         }
 
         // The Newton step
-        res.jacobian(x, system_);
+        if (!jacobianNow)
+        {
+            res.jacobian(x, system_);
+        }
         dx = Zero;
         // (a step short of the linear tolerance, e.g. at the round-off
         // floor near convergence, is still a descent step: the
@@ -1029,7 +1091,14 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances
         label nLocalNonFinite = 0;
-        nProjected += localWaterSolves(res, x, sW, nLocalNonFinite);
+        // (a symmetric pair of sweeps: in cell order, then in reverse,
+        // so that a front moving either way through the numbering is
+        // swept along its motion once; see Description; collective)
+        nProjected += localWaterSolves(res, x, sW, false, nLocalNonFinite);
+        if (nLocalNonFinite == 0)
+        {
+            nProjected += localWaterSolves(res, x, sW, true, nLocalNonFinite);
+        }
         if (nLocalNonFinite > 0)
         {
             out.failure =
