@@ -200,7 +200,6 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const pendularResidual& res,
     scalarField& x,
     const scalarField& sW,
-    const bool reverse,
     label& nNonFinite
 ) const
 {
@@ -210,10 +209,8 @@ Foam::label Foam::pendularNewton::localWaterSolves
     const labelList& phase = res.phases();
     label nLocal = 0;
     nNonFinite = 0;
-    const label nCells = x.size()/3;
-    for (label i = 0; i < nCells; ++i)
+    for (label c = 0; c < x.size()/3; ++c)
     {
-        const label c = reverse ? nCells - 1 - i : i;
         const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
         if
         (
@@ -221,43 +218,6 @@ Foam::label Foam::pendularNewton::localWaterSolves
          && Wk > 0 && x[3*c + 2] >= Wk && x[3*c + 2] < nearKink_*Wk
         )
         {
-            const label solved =
-                solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr());
-            if (solved > 0)
-            {
-                ++nLocal;
-            }
-            else if (solved < 0)
-            {
-                ++nNonFinite;
-            }
-        }
-        else if
-        (
-            phase[c] == pendularResidual::bothPhases
-         && Wk > 0 && x[3*c + 2] >= nearKink_*Wk
-        )
-        {
-            // A wet cell next to the front: a face neighbour (on this
-            // rank) near or below its kink
-            bool front = false;
-            res.forCellFaces
-            (
-                c,
-                [&](const label, const label nbr, const label)
-                {
-                    if (nbr >= 0 && phase[nbr] == pendularResidual::bothPhases)
-                    {
-                        front = front
-                         || x[3*nbr + 2]
-                          < nearKink_*medium.kinkWater(phi[nbr], x[3*nbr]);
-                    }
-                }
-            );
-            if (!front)
-            {
-                continue;
-            }
             const label solved =
                 solveCellWater(res, c, sW[c]*WTolAbs_, x, txNbr());
             if (solved > 0)
@@ -666,12 +626,12 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // projected, solved locally or switched cells (the acceptance
         // tests and the chord step below all require none), gets its
         // Jacobian with its residual (coupledResidual::jacobian returns
-        // R(x), the same evaluation, bit for bit): the residual is not
+        // R(x) from the same evaluation, bit for bit): the residual is not
         // evaluated twice at the same x (issue 13; bench/pendularNewton's
-        // column500_newton: 852 of its 965 Jacobians; the results bit for
-        // bit those of the two calls, CPU -3 % measured alone).
-        // Not at maxIter_ (no step follows); an iterate that then fails
-        // (non-finite residual, divergence) wastes one assembly
+        // column500_newton: 1029 of its 1147 Jacobians; results
+        // bit for bit those of the two calls). Not at maxIter_ (no step
+        // follows); an iterate that then fails (non-finite residual,
+        // divergence) has cost one assembly for nothing
         const bool jacobianNow =
             iter < maxIter_ && (iter == 0 || nChopped + nProjected > 0);
         if (jacobianNow)
@@ -966,7 +926,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             return out;
         }
 
-        // The Newton step
+        // The Newton step (its Jacobian assembled above if jacobianNow)
         if (!jacobianNow)
         {
             res.jacobian(x, system_);
@@ -1091,14 +1051,7 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances
         label nLocalNonFinite = 0;
-        // (a symmetric pair of sweeps: in cell order, then in reverse,
-        // so that a front moving either way through the numbering is
-        // swept along its motion once; see Description; collective)
-        nProjected += localWaterSolves(res, x, sW, false, nLocalNonFinite);
-        if (nLocalNonFinite == 0)
-        {
-            nProjected += localWaterSolves(res, x, sW, true, nLocalNonFinite);
-        }
+        nProjected += localWaterSolves(res, x, sW, nLocalNonFinite);
         if (nLocalNonFinite > 0)
         {
             out.failure =
