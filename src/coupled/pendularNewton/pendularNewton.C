@@ -630,8 +630,27 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         // converged iterate of a sub-step needs none: on the column of
         // tests/pendularNewton 1688 Jacobians of 6271 are not assembled,
         // no CPU saving measurable on a loaded machine, 2.24 s and 2.35 s;
-        // the states of the cells at x are cached for it)
-        res.residual(x, R);
+        // the states of the cells at x are cached for it). An iterate that
+        // cannot end the sub-step, the first or one whose update chopped,
+        // projected, solved locally or switched cells (the acceptance
+        // tests and the chord step below all require none), gets its
+        // Jacobian with its residual (coupledResidual::jacobian returns
+        // R(x) from the same evaluation, bit for bit): the residual is not
+        // evaluated twice at the same x (issue 13; bench/pendularNewton's
+        // column500_newton: 1029 of its 1147 Jacobians; results
+        // bit for bit those of the two calls). Not at maxIter_ (no step
+        // follows); an iterate that then fails (non-finite residual,
+        // divergence) has cost one assembly for nothing
+        const bool jacobianNow =
+            iter < maxIter_ && (iter == 0 || nChopped + nProjected > 0);
+        if (jacobianNow)
+        {
+            R = res.jacobian(x, system_);
+        }
+        else
+        {
+            res.residual(x, R);
+        }
         if (nanResidual_.fire() && R.size())
         {
             R[0] = std::numeric_limits<scalar>::quiet_NaN();
@@ -916,8 +935,11 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
             return out;
         }
 
-        // The Newton step
-        res.jacobian(x, system_);
+        // The Newton step (its Jacobian assembled above if jacobianNow)
+        if (!jacobianNow)
+        {
+            res.jacobian(x, system_);
+        }
         dx = Zero;
         // (a step short of the linear tolerance, e.g. at the round-off
         // floor near convergence, is still a descent step: the
