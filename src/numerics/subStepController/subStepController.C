@@ -26,11 +26,21 @@ Foam::subStepController::subStepController
     dt_(deltaT0),
     nAcceptedSinceRejection_(0),
     grown_(false),
+    grownSinceRejection_(false),
+    nGrownRejected_(0),
     nRejected_(0),
     nSubSteps_(0),
     totalIter_(0),
     maxChange_(0)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::subStepController::hold() const
+{
+    return holdSubSteps*(label(1) << min(nGrownRejected_, label(20)));
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -61,6 +71,8 @@ void Foam::subStepController::start(const scalar DeltaT)
     dt_ = DeltaT;
     nAcceptedSinceRejection_ = 0;
     grown_ = false;
+    grownSinceRejection_ = false;
+    nGrownRejected_ = 0;
     nRejected_ = 0;
     nSubSteps_ = 0;
     totalIter_ = 0;
@@ -96,13 +108,14 @@ void Foam::subStepController::accept
     lastDeltaT_ = grown_ ? dtNominal_ : dt_;
     lastIterations_ = iter;
 
-    if (nRejected_ > 0 && ++nAcceptedSinceRejection_ >= holdSubSteps)
+    if (nRejected_ > 0 && ++nAcceptedSinceRejection_ >= hold())
     {
         const scalar factor = controls_.stepFactor(maxChange, iter);
         if (factor > 1)
         {
             dtNominal_ = min(DeltaT_, factor*dtNominal_);
             grown_ = true;
+            grownSinceRejection_ = true;
         }
     }
 }
@@ -122,6 +135,12 @@ bool Foam::subStepController::reject(const label iter, const string& reason)
     dtNominal_ = 0.5*dt_;
     dt_ = dtNominal_;
     nAcceptedSinceRejection_ = 0;
+    if (grownSinceRejection_)
+    {
+        // A grown sub-step failed: hold the next one twice as long
+        ++nGrownRejected_;
+        grownSinceRejection_ = false;
+    }
     ++nRejected_;
 
     Info<< "    step rejected after " << iter << " iterations";
