@@ -229,19 +229,74 @@ Foam::scalar Foam::pendularResidual::cellStep
 ) const
 {
     const label phase = celli >= 0 ? phase_[celli] : nbrPhase_[bFacei];
-    if (j != 2 || phase != bothPhases)
+    if (j == 2 && phase == bothPhases)
     {
-        return h;
+        const scalar phi =
+            celli >= 0 ? medium_.porosity()[celli] : nbrPorosity_[bFacei];
+        // The gas room: the water a two-phase cell holds below S_l = 1
+        const scalar room = phi*medium_.rhoL() - y[2];
+        if (room > 0 && h > 0.5*room)
+        {
+            return -max(0.5*room, 1e-4*h);
+        }
     }
-    const scalar phi =
-        celli >= 0 ? medium_.porosity()[celli] : nbrPorosity_[bFacei];
-    // The gas room: the water a two-phase cell holds below S_l = 1
-    const scalar room = phi*medium_.rhoL() - y[2];
-    if (room <= 0 || h <= 0.5*room)
+    return liquidBoundarySwitch(celli, y, j, h) ? -h : h;
+}
+
+
+bool Foam::pendularResidual::liquidBoundarySwitch
+(
+    const label celli,
+    const scalar* y,
+    const label j,
+    const scalar h
+) const
+{
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    if (!liquid || celli < 0)
     {
-        return h;
+        return false;
     }
-    return -max(0.5*room, 1e-4*h);
+    const label nInternal = fvMesh_.nInternalFaces();
+    const polyBoundaryMesh& pbm = fvMesh_.boundaryMesh();
+    scalar yp[3] = {y[0], y[1], y[2]};
+    yp[j] += h;
+    for (const label facei : fvMesh_.cells()[celli])
+    {
+        if (facei < nInternal)
+        {
+            continue;
+        }
+        const label patchi = pbm.whichPatch(facei);
+        if
+        (
+            fvMesh_.boundary()[patchi].coupled()
+         || liquid->type(patchi) == liquidFlow::patchType::impermeable
+        )
+        {
+            continue;
+        }
+        const label i = facei - pbm[patchi].start();
+        // (copies: state() returns a reference into the cell's cache)
+        const cellState c = state(celli, y);
+        scalar E;
+        const scalar Fl =
+            liquidBoundaryFlux
+            (
+                facei, patchi, i, c, boundaryState(patchi, i, c), E
+            );
+        const cellState cp = state(celli, yp);
+        const scalar Flp =
+            liquidBoundaryFlux
+            (
+                facei, patchi, i, cp, boundaryState(patchi, i, cp), E
+            );
+        if ((Fl >= 0) != (Flp >= 0))
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 
