@@ -261,6 +261,11 @@ bool Foam::pendularResidual::liquidBoundarySwitch
     const polyBoundaryMesh& pbm = fvMesh_.boundaryMesh();
     scalar yp[3] = {y[0], y[1], y[2]};
     yp[j] += h;
+    // The cell's two states, evaluated once, at its first permeable
+    // boundary face (copies: state() returns a reference into the cell's
+    // cache, which the second evaluation may overwrite)
+    bool evaluated = false;
+    cellState c, cp;
     for (const label facei : fvMesh_.cells()[celli])
     {
         if (facei < nInternal)
@@ -276,16 +281,19 @@ bool Foam::pendularResidual::liquidBoundarySwitch
         {
             continue;
         }
+        if (!evaluated)
+        {
+            c = state(celli, y);
+            cp = state(celli, yp);
+            evaluated = true;
+        }
         const label i = facei - pbm[patchi].start();
-        // (copies: state() returns a reference into the cell's cache)
-        const cellState c = state(celli, y);
         scalar E;
         const scalar Fl =
             liquidBoundaryFlux
             (
                 facei, patchi, i, c, boundaryState(patchi, i, c), E
             );
-        const cellState cp = state(celli, yp);
         const scalar Flp =
             liquidBoundaryFlux
             (
