@@ -104,6 +104,12 @@ void Foam::coupledResidual::evaluate
     scalarSquareMatrix dOwn(B), dNei(B);
     scalar F[64], xo[64], xn[64];
 
+    // The states across the coupled patches (collective), then the
+    // deferred terms of a derived residual (collective)
+    const tmp<scalarField> txNbr = neighbourStates(x);
+    const scalarField& xNbr = txNbr();
+    updateDeferred(x, xNbr);
+
     // Cell terms
     for (label celli = 0; celli < mesh_.nCells(); ++celli)
     {
@@ -165,8 +171,6 @@ void Foam::coupledResidual::evaluate
     }
 
     // Boundary faces: across coupled patches with the exchanged states
-    const tmp<scalarField> txNbr = neighbourStates(x);
-    const scalarField& xNbr = txNbr();
     for (const polyPatch& pp : mesh_.boundaryMesh())
     {
         if (isA<emptyPolyPatch>(pp))

@@ -11,6 +11,8 @@
 #include "liquidFlow.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
 #include "mixedFvPatchFields.H"
+#include "calculatedFvPatchFields.H"
+#include "unitConversion.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -61,8 +63,16 @@ Foam::pendularResidual::pendularResidual
     nbrAlphaGuess_(),
     phase_(fvMesh_.nCells(), label(bothPhases)),
     nbrPhase_(),
-    liquidOnlyScales_(xScale())
+    liquidOnlyScales_(xScale()),
+    nonOrthCorrected_(nonOrthogonalMesh(fvMesh_)),
+    snGradCorr_()
 {
+    if (nonOrthCorrected_)
+    {
+        checkSnGradSchemes(fvMesh_);
+        snGradCorr_.setSize(nCorrected*fvMesh_.nFaces(), Zero);
+    }
+
     if (medium_.saturatedZone())
     {
         liquidOnlyScales_[1] = 1/medium_.storage();
@@ -467,6 +477,203 @@ void Foam::pendularResidual::checkTemperatureConditions
 }
 
 
+Foam::scalar Foam::pendularResidual::maxNonOrthogonality
+(
+    const fvMesh& mesh
+)
+{
+    // |k_f| = tan of the angle between n_f and d_f (k_f is normal to n_f:
+    // k_f . n_f = 1 - (n_f . d_f)/(n_f . d_f)); 0 on the faces of patches
+    // that are not coupled
+    const surfaceVectorField& k = mesh.nonOrthCorrectionVectors();
+    scalar tanMax = max(mag(k.primitiveField()));
+    forAll(k.boundaryField(), patchi)
+    {
+        if (k.boundaryField()[patchi].coupled())
+        {
+            tanMax = max(tanMax, max(mag(k.boundaryField()[patchi])));
+        }
+    }
+    reduce(tanMax, maxOp<scalar>());
+    return radToDeg(Foam::atan(tanMax));
+}
+
+
+bool Foam::pendularResidual::nonOrthogonalMesh(const fvMesh& mesh)
+{
+    return Foam::tan(degToRad(maxNonOrthogonality(mesh))) > 1e-10;
+}
+
+
+Foam::wordList Foam::pendularResidual::correctedFieldNames()
+{
+    return wordList({"T", "p", "omegaW", "liquidPotential"});
+}
+
+
+void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
+{
+    if (!nonOrthogonalMesh(mesh))
+    {
+        return;
+    }
+    // A field to ask the schemes their delta coefficients with (they do
+    // not depend on its values)
+    const volScalarField probe
+    (
+        IOobject
+        (
+            "snGradSchemeProbe", mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero)
+    );
+    const dictionary& snGradDict =
+        mesh.schemesDict().subDict("snGradSchemes");
+    for (const word& name : correctedFieldNames())
+    {
+        const word key = "snGrad(" + name + ')';
+        const tmp<fv::snGradScheme<scalar>> scheme =
+            fv::snGradScheme<scalar>::New(mesh, mesh.snGradScheme(key));
+        if (&scheme().deltaCoeffs(probe)() != &mesh.nonOrthDeltaCoeffs())
+        {
+            FatalIOErrorInFunction(snGradDict)
+                << "Keyword '" << (snGradDict.found(key) ? key : "default")
+                << "' in " << snGradDict.name() << ": the snGrad scheme of "
+                << name << " (" << mesh.snGradScheme(key) << ") on a"
+                << " non-orthogonal mesh (up to "
+                << maxNonOrthogonality(mesh) << " degrees) is not supported"
+                << " by pendularFoam's Newton engine, whose face fluxes take"
+                << " the two-point gradient with the non-orthogonal delta"
+                << " coefficients: valid schemes corrected, uncorrected,"
+                << " limited, faceCorrected"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::pendularResidual::updateDeferred
+(
+    const scalarField& x,
+    const scalarField&
+) const
+{
+    // (the same on every rank: nonOrthogonalMesh is reduced)
+    if (!nonOrthCorrected_)
+    {
+        return;
+    }
+    const liquidFlow* liquid = medium_.liquidFlowPtr();
+    const wordList names(correctedFieldNames());
+    const dimensionSet dims[nCorrected] =
+        {dimTemperature, dimPressure, dimless, dimPressure};
+    PtrList<volScalarField> fields(nCorrected);
+    forAll(names, k)
+    {
+        fields.set
+        (
+            k,
+            new volScalarField
+            (
+                IOobject
+                (
+                    names[k], fvMesh_.time().timeName(), fvMesh_,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                fvMesh_,
+                dimensionedScalar(dims[k], Zero),
+                calculatedFvPatchScalarField::typeName
+            )
+        );
+    }
+    volScalarField& Tf = fields[0];
+    volScalarField& pf = fields[1];
+    volScalarField& omegaf = fields[2];
+    volScalarField& Phif = fields[3];
+    const vectorField& C = fvMesh_.C();
+    forAll(Tf, celli)
+    {
+        const cellState& s = state(celli, &x[3*celli]);
+        Tf[celli] = s.T;
+        pf[celli] = s.p;
+        omegaf[celli] = s.omega;
+        if (liquid)
+        {
+            const liquidDarcyFlux::liquidState l = liquidState(s);
+            Phif[celli] =
+                l.pg - l.pc
+              - liquid->darcy().rhoLiquid()*(liquid->darcy().g() & C[celli]);
+        }
+    }
+    // The faces of patches that are not coupled: pendularState's values
+    // (boundaryState); those of coupled patches: the cells across
+    // (correctBoundaryConditions, collective)
+    forAll(fvMesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = fvMesh_.boundary()[patchi];
+        if (patch.coupled())
+        {
+            continue;
+        }
+        scalarField& Tp = Tf.boundaryFieldRef()[patchi];
+        scalarField& pp = pf.boundaryFieldRef()[patchi];
+        scalarField& omegap = omegaf.boundaryFieldRef()[patchi];
+        scalarField& Phip = Phif.boundaryFieldRef()[patchi];
+        forAll(Tp, i)
+        {
+            const label celli = patch.faceCells()[i];
+            const cellState b =
+                boundaryState(patchi, i, state(celli, &x[3*celli]));
+            Tp[i] = b.T;
+            pp[i] = b.p;
+            omegap[i] = b.omega;
+            Phip[i] = Phif[celli];
+        }
+    }
+    forAll(fields, k)
+    {
+        fields[k].correctBoundaryConditions();
+    }
+
+    snGradCorr_ = Zero;
+    const label nInternal = fvMesh_.nInternalFaces();
+    forAll(fields, k)
+    {
+        // (the fvSchemes' scheme of the field, as fvc::snGrad selects it)
+        const tmp<fv::snGradScheme<scalar>> scheme =
+            fv::snGradScheme<scalar>::New
+            (
+                fvMesh_, fvMesh_.snGradScheme("snGrad(" + names[k] + ')')
+            );
+        if ((k == 3 && !liquid) || !scheme().corrected())
+        {
+            continue;
+        }
+        const tmp<surfaceScalarField> tcorr = scheme().correction(fields[k]);
+        const surfaceScalarField& corr = tcorr();
+        for (label facei = 0; facei < nInternal; ++facei)
+        {
+            snGradCorr_[nCorrected*facei + k] = corr[facei];
+        }
+        forAll(corr.boundaryField(), patchi)
+        {
+            const fvsPatchScalarField& cp = corr.boundaryField()[patchi];
+            if (!cp.coupled())
+            {
+                continue;
+            }
+            const label start = fvMesh_.boundary()[patchi].start();
+            forAll(cp, i)
+            {
+                snGradCorr_[nCorrected*(start + i) + k] = cp[i];
+            }
+        }
+    }
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::pendularResidual::pack
 (
     const scalarField& T,
@@ -649,6 +856,7 @@ void Foam::pendularResidual::flux
     const scalar magSf,
     const scalar w,
     const scalar dc,
+    const scalar* corr,
     scalar* F
 ) const
 {
@@ -657,20 +865,26 @@ void Foam::pendularResidual::flux
     // values (owner where the flux is >= 0)
     // With liquidFlow, times k_rg of the face (liquidFlow::krgFace: as
     // k_rl, upwind of the gas pressure difference by default)
+    // The snGrad of each field dc (phi_n - phi_o) + c, c its non-orthogonal
+    // correction, written dc (phi_n - phi_o + c/dc): without a correction
+    // the values of the two-point fluxes, bit for bit
+    const scalar dT = n.T - o.T + (corr ? corr[0]/dc : 0);
+    const scalar dp = n.p - o.p + (corr ? corr[1]/dc : 0);
+    const scalar dOmega = n.omega - o.omega + (corr ? corr[2]/dc : 0);
     const liquidFlow* liquid = medium_.liquidFlowPtr();
     const scalar KgByMu =
         (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity()
-       *(liquid ? liquid->krgFace(o.alpha, n.alpha, n.p - o.p, w) : 1);
-    const scalar q = -KgByMu*(n.p - o.p)*dc*magSf;
+       *(liquid ? liquid->krgFace(o.alpha, n.alpha, dp, w) : 1);
+    const scalar q = -KgByMu*dp*dc*magSf;
     const scalar j =
         -pendularState::faceValue(o.Dv, n.Dv, w)*(w*o.rhoG + (1 - w)*n.rhoG)
-        *(n.omega - o.omega)*dc*magSf;
+        *dOmega*dc*magSf;
     const scalar Fw = (q >= 0 ? o.rhoW : n.rhoW)*q + j;
     const scalar Fa = (q >= 0 ? o.rhoA : n.rhoA)*q - j;
     F[0] = Fw;
     F[1] = Fa;
     F[2] =
-        -(w*o.kappa + (1 - w)*n.kappa)*(n.T - o.T)*dc*magSf
+        -(w*o.kappa + (1 - w)*n.kappa)*dT*dc*magSf
       + Fa*(Fa >= 0 ? o.hA : n.hA)
       + Fw*(Fw >= 0 ? o.hW : n.hW);
 }
@@ -750,7 +964,8 @@ void Foam::pendularResidual::faceFlux
         flux
         (
             o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
-            fvMesh_.nonOrthDeltaCoeffs()[facei], F
+            fvMesh_.nonOrthDeltaCoeffs()[facei],
+            snGradCorrections(facei), F
         );
         addLiquidFlux(facei, o, n, F);
         return;
@@ -770,7 +985,8 @@ void Foam::pendularResidual::faceFlux
     (
         o, n, fvMesh_.magSf().boundaryField()[patchi][i],
         fvMesh_.weights().boundaryField()[patchi][i],
-        fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i], F
+        fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
+        snGradCorrections(facei), F
     );
     addLiquidFlux(facei, o, n, F);
 }
@@ -991,12 +1207,14 @@ void Foam::pendularResidual::addLiquidFlux
     {
         return;
     }
+    const scalar* corr = snGradCorrections(facei);
     const scalar Fl =
         liquid->faceFlux
         (
             facei,
             liquidState(o),
-            liquidState(n)
+            liquidState(n),
+            corr ? corr[3] : 0
         );
     F[0] += Fl;
     F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);

@@ -75,11 +75,16 @@ Foam::scalar Foam::liquidDarcyFlux::massFlux
     const vector& d,
     const scalar magSf,
     const scalar delta,
-    const scalar w
+    const scalar w,
+    const scalar snGradCorrection
 ) const
 {
-    // The potential difference driving the flow from o to n
-    const scalar dPhi = (n.pg - o.pg) - (n.pc - o.pc) - rhol_*(g_ & d);
+    // The potential difference driving the flow from o to n, with the
+    // non-orthogonal correction of its gradient over delta (0: the same
+    // value, bit for bit, as without it)
+    const scalar dPhi =
+        (n.pg - o.pg) - (n.pc - o.pc) - rhol_*(g_ & d)
+      + snGradCorrection/delta;
     const scalar Kf = harmonicFaceMean(o.K, n.K, w);
     const scalar krf = faceValue(o.krl, n.krl, dPhi, w);
     return -rhol_*Kf*krf/mul_*magSf*delta*dPhi;

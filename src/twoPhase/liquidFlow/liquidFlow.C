@@ -368,7 +368,8 @@ Foam::scalar Foam::liquidFlow::faceFlux
 (
     const label facei,
     const liquidDarcyFlux::liquidState& o,
-    const liquidDarcyFlux::liquidState& n
+    const liquidDarcyFlux::liquidState& n,
+    const scalar snGradCorrection
 ) const
 {
     if (facei < mesh_.nInternalFaces())
@@ -381,7 +382,8 @@ Foam::scalar Foam::liquidFlow::faceFlux
                 C[mesh_.faceNeighbour()[facei]] - C[mesh_.faceOwner()[facei]],
                 mesh_.magSf()[facei],
                 mesh_.nonOrthDeltaCoeffs()[facei],
-                mesh_.weights()[facei]
+                mesh_.weights()[facei],
+                snGradCorrection
             );
     }
     // A face of a processor patch: the internal face seen from this side
@@ -394,7 +396,8 @@ Foam::scalar Foam::liquidFlow::faceFlux
             o, n, delta_[bFacei],
             mesh_.magSf().boundaryField()[patchi][i],
             mesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
-            mesh_.weights().boundaryField()[patchi][i]
+            mesh_.weights().boundaryField()[patchi][i],
+            snGradCorrection
         );
 }
 
