@@ -511,11 +511,14 @@ Foam::wordList Foam::pendularResidual::correctedFieldNames()
 }
 
 
-void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
+Foam::word Foam::pendularResidual::unsupportedSnGradScheme
+(
+    const fvMesh& mesh
+)
 {
     if (!nonOrthogonalMesh(mesh))
     {
-        return;
+        return word::null;
     }
     // A field to ask the schemes their delta coefficients with (they do
     // not depend on its values)
@@ -529,28 +532,58 @@ void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
         mesh,
         dimensionedScalar(dimless, Zero)
     );
-    const dictionary& snGradDict =
-        mesh.schemesDict().subDict("snGradSchemes");
     for (const word& name : correctedFieldNames())
     {
-        const word key = "snGrad(" + name + ')';
         const tmp<fv::snGradScheme<scalar>> scheme =
-            fv::snGradScheme<scalar>::New(mesh, mesh.snGradScheme(key));
+            fv::snGradScheme<scalar>::New
+            (
+                mesh, mesh.snGradScheme("snGrad(" + name + ')')
+            );
         if (&scheme().deltaCoeffs(probe)() != &mesh.nonOrthDeltaCoeffs())
         {
-            FatalIOErrorInFunction(snGradDict)
-                << "Keyword '" << (snGradDict.found(key) ? key : "default")
-                << "' in " << snGradDict.name() << ": the snGrad scheme of "
-                << name << " (" << mesh.snGradScheme(key) << ") on a"
-                << " non-orthogonal mesh (up to "
-                << maxNonOrthogonality(mesh) << " degrees) is not supported"
-                << " by pendularFoam's Newton engine, whose face fluxes take"
-                << " the two-point gradient with the non-orthogonal delta"
-                << " coefficients: valid schemes corrected, uncorrected,"
-                << " limited, faceCorrected"
-                << exit(FatalIOError);
+            return name;
         }
     }
+    return word::null;
+}
+
+
+Foam::word Foam::pendularResidual::snGradSchemeName
+(
+    const fvMesh& mesh,
+    const word& field
+)
+{
+    // (fvSchemes hands the entry's stream rewound to each reader)
+    ITstream& is = mesh.snGradScheme("snGrad(" + field + ')');
+    word name;
+    is >> name;
+    is.rewind();
+    return name;
+}
+
+
+void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
+{
+    const word name = unsupportedSnGradScheme(mesh);
+    if (name.empty())
+    {
+        return;
+    }
+    const dictionary& snGradDict =
+        mesh.schemesDict().subDict("snGradSchemes");
+    const word key = "snGrad(" + name + ')';
+    FatalIOErrorInFunction(snGradDict)
+        << "Keyword '" << (snGradDict.found(key) ? key : word("default"))
+        << "' in " << snGradDict.name() << ": the snGrad scheme of "
+        << name << " (" << snGradSchemeName(mesh, name) << ") on a"
+        << " non-orthogonal mesh (up to " << maxNonOrthogonality(mesh)
+        << " degrees) is not supported by pendularFoam's Newton engine,"
+        << " whose face fluxes take the two-point gradient with the"
+        << " non-orthogonal delta coefficients: valid schemes corrected,"
+        << " uncorrected, limited, faceCorrected (or nonlinear { engine"
+        << " segregated; })"
+        << exit(FatalIOError);
 }
 
 
