@@ -61,6 +61,7 @@ Foam::pendularResidual::pendularResidual
     nbrAlphaGuess_(),
     phase_(fvMesh_.nCells(), label(bothPhases)),
     nbrPhase_(),
+    liquidBoundaryCell_(),
     liquidOnlyScales_(xScale())
 {
     if (medium_.saturatedZone())
@@ -115,6 +116,28 @@ Foam::pendularResidual::pendularResidual
     );
     syncTools::swapBoundaryCellList(fvMesh_, alphaGuess_, nbrAlphaGuess_);
     setPhases(phases0.empty() ? phase_ : phases0);
+
+    // The cells with a face on a patch the liquid may cross
+    // (liquidBoundarySwitch)
+    if (const liquidFlow* liquid = medium_.liquidFlowPtr())
+    {
+        liquidBoundaryCell_.setSize(fvMesh_.nCells(), false);
+        const polyBoundaryMesh& pbm = fvMesh_.boundaryMesh();
+        forAll(pbm, patchi)
+        {
+            if
+            (
+                !fvMesh_.boundary()[patchi].coupled()
+             && liquid->type(patchi) != liquidFlow::patchType::impermeable
+            )
+            {
+                for (const label celli : pbm[patchi].faceCells())
+                {
+                    liquidBoundaryCell_[celli] = true;
+                }
+            }
+        }
+    }
 
     forAll(W0_, celli)
     {
@@ -253,7 +276,7 @@ bool Foam::pendularResidual::liquidBoundarySwitch
 ) const
 {
     const liquidFlow* liquid = medium_.liquidFlowPtr();
-    if (!liquid || celli < 0)
+    if (!liquid || celli < 0 || !liquidBoundaryCell_[celli])
     {
         return false;
     }
