@@ -23,7 +23,11 @@ Description
       Kelvin range);
     - the definition W = phi (alpha_l rho_l + (1 - alpha_l) rho_w) and the
       round trip alpha_l(W(alpha_l)) (to 1e-10: the inverse iterates to
-      rounding).
+      rounding);
+    - the inverse continuous near its guess (issue 14: it returned its
+      guess within 1e-14 W, a staircase): the slope across +-32 ulps of W
+      from the guess alpha_l(W) against 1/(dW/d alpha_l) (0.25), and the
+      result independent of the guess within its resolution.
 
     One line per quantity: the worst relative error over the grid and where.
     dE/dT (energyCapacity) is not checked: it is an approximate Jacobian by
