@@ -558,6 +558,43 @@ Foam::word Foam::checkedRead::nearest
 }
 
 
+namespace Foam
+{
+namespace checkedRead
+{
+    //- The sub-dictionaries of dict named after it, at any depth
+    static void nameSubDicts(const dictionary& dict)
+    {
+        for (const entry& e : dict)
+        {
+            if (e.isDict())
+            {
+                // (a name is metadata; the dictionary was not created
+                // const)
+                const_cast<dictionary&>(e.dict()).name() =
+                    dict.name() + '.' + e.keyword();
+                nameSubDicts(e.dict());
+            }
+        }
+    }
+}
+}
+
+
+void Foam::checkedRead::nameAfterFile(const IOdictionary& dict)
+{
+    // The file, looked up on every rank (with a master-slave file handler
+    // the lookup is collective); IOstream::staticName_ is the name of a
+    // stream without a file
+    const fileName file(dict.globalFilePath(dict.type()));
+    if (file.size() && dict.dictionary::name() == "IOstream")
+    {
+        const_cast<IOdictionary&>(dict).dictionary::name() = file;
+        nameSubDicts(dict);
+    }
+}
+
+
 void Foam::checkedRead::checkKeywords
 (
     const dictionary& dict,

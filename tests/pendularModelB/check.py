@@ -1,10 +1,14 @@
 """Model B -> model A as the rate-law factor f -> 0 (relaxation time
 proportional to f), with the same fixed steps: the largest differences in T,
 alpha_l and the water left after 1 h decrease with f, about in proportion
-(measured at f = 100 / 1 / 0.01: T 0.042 / 0.0012 / 1.5e-5 K, alpha_l
-3.0e-3 / 3.1e-5 / 3.2e-7, water 3.5e-5 / 5.7e-6 / 2.2e-8 relative); at
-f = 0.01 the test allows 1e-3 K, 1e-5 in alpha_l and 1e-6 of the water.
-Model B closes its balances as model A."""
+(measured at f = 100 / 1 / 0.01, both models by the Newton engine since
+2026-12-03: T 0.042 / 0.0012 / 1.5e-5 K, alpha_l 3.0e-3 / 3.1e-5 /
+3.2e-7, water 3.5e-5 / 7.1e-7 / 2.2e-8 relative; with model B by the
+segregated engine the water at f = 1 was 5.7e-6, the rest the same to
+the digits above); at f = 0.01 the test allows 1e-3 K, 1e-5 in alpha_l
+and 1e-6 of the water. Model B closes its balances as model A: 1e-10
+(Newton: 1.1e-11 to 2.5e-11 measured; the segregated engine's were
+allowed 1e-8)."""
 import os
 import sys
 import hearthcheck as hc
@@ -30,7 +34,7 @@ for f in ('100', '1', '0.01'):
           ' water %.3g' % ((f,) + d))
     bal = hc.read_energy_balances(os.path.join(root, 'modelB_' + f, 'log.pendularFoam'))
     c.le('model B (f = %s): worst relative imbalance' % f,
-         max(abs(b[2]) for b in bal), 1e-8)
+         max(abs(b[2]) for b in bal), 1e-10)
 for k, what in enumerate(('T', 'alpha_l', 'water')):
     c.true('%s difference decreases with f' % what,
            diffs[0][k] > diffs[1][k] > diffs[2][k],

@@ -49,9 +49,9 @@ Description
                             WTol; balanceTolerance; strictBalance; }
     engine: newton (Newton on the coupled balances of a sub-step:
     src/coupled pendularNewton, its linear solver set by fvSolution's
-    optional 'coupled' dictionary; the default for model A) or segregated
-    (the iterations above; the default for model B, which the Newton
-    engine does not solve, on a non-orthogonal mesh, where its fluxes
+    optional 'coupled' dictionary; the default, models A and B, model B
+    backward Euler only) or segregated (the iterations above; the
+    default on a non-orthogonal mesh, where the Newton engine's fluxes
     lack the correction, and with a mixed boundary condition of T, p or
     pw other than surfaceHeatLoss on T, which its residual would hold at
     its last evaluated value: createNewton.H).

@@ -24,7 +24,7 @@ Foam::pendularResidual::pendularResidual
     const volScalarField& pw,
     const scalar pRef,
     const scalarField& x0,
-    const scalarField& alphaGuess,
+    const scalarField& alphaOld,
     const scalar dt,
     const differenceScheme scheme,
     const labelList& phases0
@@ -54,15 +54,16 @@ Foam::pendularResidual::pendularResidual
     eulerCells_(),
     eulerHistory_(),
     Tn_(fvMesh_.nCells()),
-    alphaGuess_(alphaGuess),
+    alphaOld_(alphaOld),
     cache_(fvMesh_.nCells()),
     cacheNext_(fvMesh_.nCells(), Zero),
     satCache_(fvMesh_.nCells()),
     satNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
-    nbrAlphaGuess_(),
+    nbrAlphaOld_(),
     phase_(fvMesh_.nCells(), label(bothPhases)),
     nbrPhase_(),
+    liquidBoundaryCell_(),
     liquidOnlyScales_(xScale()),
     nonOrthCorrected_(nonOrthogonalMesh(fvMesh_)),
     snGradCorr_()
@@ -95,13 +96,6 @@ Foam::pendularResidual::pendularResidual
         }
     }
 
-    if (medium_.nonEquilibrium())
-    {
-        FatalErrorInFunction
-            << "pendularResidual: model A only (local equilibrium); the"
-            << " medium is of model B (nonEquilibrium)" << exit(FatalError);
-    }
-
     // The patch kinds of pendularFoam (pendularState); other coupled
     // patches than processor ones are refused
     kind_ = pendularState::patchKinds(p_, pw_);
@@ -123,12 +117,47 @@ Foam::pendularResidual::pendularResidual
     (
         fvMesh_, medium_.porosity().primitiveField(), nbrPorosity_
     );
-    syncTools::swapBoundaryCellList(fvMesh_, alphaGuess_, nbrAlphaGuess_);
+    syncTools::swapBoundaryCellList(fvMesh_, alphaOld_, nbrAlphaOld_);
     setPhases(phases0.empty() ? phase_ : phases0);
+
+    // The cells with a face on a patch the liquid may cross
+    // (liquidBoundarySwitch)
+    if (const liquidFlow* liquid = medium_.liquidFlowPtr())
+    {
+        liquidBoundaryCell_.setSize(fvMesh_.nCells(), false);
+        const polyBoundaryMesh& pbm = fvMesh_.boundaryMesh();
+        forAll(pbm, patchi)
+        {
+            if
+            (
+                !fvMesh_.boundary()[patchi].coupled()
+             && liquid->type(patchi) != liquidFlow::patchType::impermeable
+            )
+            {
+                for (const label celli : pbm[patchi].faceCells())
+                {
+                    liquidBoundaryCell_[celli] = true;
+                }
+            }
+        }
+    }
 
     forAll(W0_, celli)
     {
-        const cellState s = state(celli, &x0[3*celli]);
+        // Model B: the old state is the one accepted at the end of the
+        // last sub-step, at its liquid fraction alphaOld (the state of x0
+        // would relax it once more over dt); model A: the state of x0
+        const scalar phi = medium_.porosity()[celli];
+        const scalar* x0c = &x0[3*celli];
+        const cellState s =
+            medium_.nonEquilibrium()
+          ? pendularState::closure
+            (
+                medium_, phi, x0c[0], x0c[1] + pRef_, x0c[2],
+                alphaOld_[celli],
+                medium_.freeVapourDensity(x0c[2], alphaOld_[celli], phi)
+            )
+          : state(celli, x0c);
         Tn_[celli] = x0[3*celli];
         W0_[celli] = s.W;
         A0_[celli] = s.A;
@@ -152,6 +181,16 @@ void Foam::pendularResidual::bdf2
     const scalarField& EOlder
 )
 {
+    if (medium_.nonEquilibrium())
+    {
+        // Model B's liquid fraction is backward Euler's solution of its
+        // rate law over the step (relaxedAlphaL): BDF2 of the balances
+        // with it would be first order in alpha (pendularFoam refuses the
+        // combination with a FatalIOError before any step)
+        FatalErrorInFunction
+            << "pendularResidual: BDF2 with model B (nonEquilibrium), whose"
+            << " rate law is backward Euler only" << exit(FatalError);
+    }
     a0_ = a0;
     DynamicList<label> cells;
     DynamicList<scalar> history;
@@ -263,7 +302,7 @@ bool Foam::pendularResidual::liquidBoundarySwitch
 ) const
 {
     const liquidFlow* liquid = medium_.liquidFlowPtr();
-    if (!liquid || celli < 0)
+    if (!liquid || celli < 0 || !liquidBoundaryCell_[celli])
     {
         return false;
     }
@@ -748,7 +787,10 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
     }
     // A state at the same T and W (e.g. the Jacobian's step of p_g) has
     // the same liquid fraction and vapour: only the gas closure is new
-    // (two-phase cells: a liquidOnly state is cheap)
+    // (two-phase cells: a liquidOnly state is cheap). Not with model B,
+    // whose relaxed liquid fraction depends on p_g too (the rate law's
+    // rho_g and p_g; its other arguments, alphaOld_ and dt_, are fixed
+    // for the residual's life: the key (x, phase) is complete)
     const cellState* same = nullptr;
     for (const cacheEntry& e : entries)
     {
@@ -756,6 +798,7 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
         (
             phase == bothPhases && e.phase == bothPhases
          && e.x[0] == x[0] && e.x[2] == x[2]
+         && !medium_.nonEquilibrium()
         )
         {
             same = &e.s;
@@ -774,7 +817,7 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
         )
       : state
         (
-            medium_.porosity()[celli], alphaGuess_[celli], x,
+            medium_.porosity()[celli], alphaOld_[celli], x,
             saturation(celli, x[0]), phase
         );
     e.phase = phase;
@@ -811,7 +854,7 @@ Foam::pendularResidual::saturation
 Foam::pendularResidual::cellState Foam::pendularResidual::state
 (
     const scalar phi,
-    const scalar alphaGuess,
+    const scalar alphaOld,
     const scalar* x,
     const pendularMedium::saturationState& sat,
     const label phase
@@ -826,15 +869,23 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
                 medium_, phi, x[0], x[1] + pRef_, x[2]
             );
     }
-    // Model A: the liquid fraction holding W at T and the vapour in
-    // Kelvin-Laplace equilibrium with it, then pendularState's closure
-    // (the inversion uses p_wsat and sigma at T, not their slopes)
+    // The water model's split of W (as pendularState::update() over the
+    // sub-step): model A the liquid fraction holding W at T and the vapour
+    // in Kelvin-Laplace equilibrium with it (alphaOld the guess of the
+    // inversion); model B the liquid fraction relaxed over dt_ from
+    // alphaOld by the backward-Euler rate law at (T, p_g, W) (Canot 2024,
+    // §1, eq. after 17; waterModels::nonEquilibrium::relaxedAlphaL) and
+    // the free vapour of the rest. Then pendularState's closure (p_wsat
+    // and sigma at T, not their slopes)
     const scalar T = x[0];
+    const scalar pg = x[1] + pRef_;
     const scalar W = x[2];
     scalar alpha, rhoW;
-    medium_.water().equilibriumState(W, sat, phi, alphaGuess, alpha, rhoW);
-    return
-        pendularState::closure(medium_, phi, T, x[1] + pRef_, W, alpha, rhoW);
+    medium_.water().liquidAndVapour
+    (
+        W, sat, phi, pg, alphaOld, dt_, alphaOld, alpha, rhoW
+    );
+    return pendularState::closure(medium_, phi, T, pg, W, alpha, rhoW);
 }
 
 
@@ -1011,7 +1062,7 @@ void Foam::pendularResidual::faceFlux
     const cellState n =
         state
         (
-            nbrPorosity_[bFacei], nbrAlphaGuess_[bFacei], xNei,
+            nbrPorosity_[bFacei], nbrAlphaOld_[bFacei], xNei,
             medium_.saturationValues(xNei[0]), nbrPhase_[bFacei]
         );
     flux

@@ -1061,9 +1061,30 @@ Foam::scalar Foam::pendularMedium::alphaL
             }
             dryTested = true;
         }
+
+        // dg/ds = alpha dW/d alpha
+        const scalar dgds =
+            alpha*porosity
+           *(
+                rhoL() - rhoW
+              + vapourSlope((1 - alpha)*rhoW, alpha, sat)
+            );
+
         if (mag(g) <= 1e-14*W)
         {
-            return alpha;
+            // Converged: one more Newton step on g from here, in alpha
+            // itself, alpha (1 - g/(dg/ds)) (not exp(s - g/(dg/ds)), whose
+            // resolution is that of s = ln(alpha), |s| epsilon relative:
+            // 16 units of round-off of alpha at 1e-12), so that the result
+            // is the root to the round-off of alpha and of g whatever the
+            // guess. Returning alpha itself made alpha_l(W) a staircase in
+            // W within 1e-14 W of the guess: in a nearly full two-phase
+            // cell, 1 - S_l ~ 1e-7, the gas residual jumped by ~126
+            // tolerances across 2 ulps of W and Newton stalled (issue 14)
+            return
+                dgds > 0
+              ? min(max(alpha*(1 - g/dgds), alphaLDry), scalar(1))
+              : alpha;
         }
         if (g > 0)
         {
@@ -1077,14 +1098,7 @@ Foam::scalar Foam::pendularMedium::alphaL
         // Newton in s on ln(W(alpha)/W) (the same step as on g near the
         // root; far from it, exact where the water is all liquid, so that
         // a guess orders of magnitude off costs one step, not one per unit
-        // of s), dg/ds = alpha dW/d alpha; bisection when it leaves the
-        // bracket
-        const scalar dgds =
-            alpha*porosity
-           *(
-                rhoL() - rhoW
-              + vapourSlope((1 - alpha)*rhoW, alpha, sat)
-            );
+        // of s); bisection when it leaves the bracket
         const scalar Walpha = g + W;
         scalar sNew =
             dgds > 0 && Walpha > 0

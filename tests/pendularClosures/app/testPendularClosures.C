@@ -23,7 +23,11 @@ Description
       Kelvin range);
     - the definition W = phi (alpha_l rho_l + (1 - alpha_l) rho_w) and the
       round trip alpha_l(W(alpha_l)) (to 1e-10: the inverse iterates to
-      rounding).
+      rounding);
+    - the inverse continuous near its guess (issue 14: it returned its
+      guess within 1e-14 W, a staircase): the slope across +-32 ulps of W
+      from the guess alpha_l(W) against 1/(dW/d alpha_l) (0.25), and the
+      result independent of the guess within its resolution.
 
     One line per quantity: the worst relative error over the grid and where.
     dE/dT (energyCapacity) is not checked: it is an approximate Jacobian by
@@ -109,6 +113,7 @@ int main(int argc, char *argv[])
 
     worstError rhoW, dRhoWdAlpha, dRhoWdAlphaFD, dRhoWdT, dRhoWdTFD;
     worstError W, dWdAlphaFD, roundTrip, dRhoWdTFixedWFD, perT;
+    worstError continuity, guessFree;
 
     // Derivatives by Richardson-extrapolated central differences,
     //   D = (4 D(h/2) - D(h))/3,  D(h) = (f(x + h) - f(x - h))/(2 h):
@@ -233,6 +238,53 @@ int main(int argc, char *argv[])
             (
                 medium.alphaL(Wc, sat, phi, 0.5*alpha), alpha, T, alpha
             );
+
+            // alpha_l(W) continuous near its guess (issue 14): from the
+            // guess alpha_l(Wc), the slope across +-32 units of round-off
+            // of W against 1/(dW/d alpha_l) (the inverse returning its
+            // guess within 1e-14 W made it a staircase: slope 0 there;
+            // 32 ulps of W are below 1e-14 W), and the result the same
+            // from a guess 1e-13 above and from one twice as far below.
+            // Both within the resolution of the root, 4 units of round-off
+            // of alpha_l or of W/(dW/d alpha_l) (where W changes faster
+            // with alpha_l than alpha_l's own round-off, the Kelvin range
+            // below ~1e-9, the slope cannot be resolved: judged against
+            // that floor, where a staircase of 1e-14 W still fails)
+            {
+                const scalar a0 = medium.alphaL(Wc, sat, phi, 0.5*alpha);
+                const scalar dWdA = medium.dWaterContentdAlphaL(a0, sat, phi);
+                const scalar resolution =
+                    4*max
+                    (
+                        a0 - std::nextafter(a0, scalar(0)),
+                        std::numeric_limits<scalar>::epsilon()*Wc/dWdA
+                    );
+                scalar Wp = Wc, Wm = Wc;
+                for (label k = 0; k < 32; ++k)
+                {
+                    Wp = std::nextafter(Wp, GREAT);
+                    Wm = std::nextafter(Wm, -GREAT);
+                }
+                const scalar slope =
+                    (
+                        medium.alphaL(Wp, sat, phi, a0)
+                      - medium.alphaL(Wm, sat, phi, a0)
+                    )/(Wp - Wm);
+                continuity.add
+                (
+                    slope, 1/dWdA, T, alpha, resolution/(Wp - Wm)
+                );
+                // (in units of the resolution: value/max(0, 1))
+                for (const scalar guess : {a0*(1 + 1e-13), 0.25*alpha})
+                {
+                    guessFree.add
+                    (
+                        mag(medium.alphaL(Wc, sat, phi, guess) - a0)
+                       /resolution,
+                        0, T, alpha, 1
+                    );
+                }
+            }
         }
     }
 
@@ -251,6 +303,19 @@ int main(int argc, char *argv[])
 
     section("inverse");
     roundTrip.check("alpha_l(W(alpha_l)) = alpha_l", 1e-10);
+    // (tolerance: W(alpha_l) evaluated to ~4 epsilon W at each end, over
+    // 64 ulps of W, each at least epsilon W/2: 8/32; a staircase: 1)
+    continuity.check
+    (
+        "d alpha_l/dW across +-32 ulps of W from the guess alpha_l(W)"
+        " = 1/(dW/d alpha_l)", 0.25
+    );
+    guessFree.check
+    (
+        "|alpha_l(W) from guesses 1e-13 above and 4 times below - from"
+        " alpha_l/2| in units of its resolution",
+        1
+    );
 
     Info<< nl << nChecks - nFailed << " of " << nChecks << " checks passed"
         << endl;

@@ -101,15 +101,38 @@ Foam::scalar Foam::waterModels::nonEquilibrium::relaxedAlphaL
         return std::exp(lo);
     }
 
-    // Regula falsi (Illinois) in s = ln(alpha)
+    // Regula falsi (Illinois) in s = ln(alpha) across the decades, then,
+    // once the bracket is within 1e-3 of alpha, in alpha itself, to the
+    // rounding of alpha: rho_w = (W/phi - alpha rho_l)/(1 - alpha) is a
+    // difference of nearly equal terms in a wet cell (W/phi ~ 1000 rho_w),
+    // so the vapour is as smooth in (T, p_g, W) as alpha's root is exact:
+    // stopped at 1e-13 in ln(alpha), the root's noise made the vapour's
+    // fluxes' derivatives by finite differences wrong by up to 2e-4 of the
+    // Jacobian's entries (the Newton engine's; tests/pendularResidual 1m)
+    const scalar eps = std::numeric_limits<scalar>::epsilon();
+    bool linear = false;
     label side = 0;
     for (label iter = 0; iter < 200; ++iter)
     {
-        const scalar s = (lo*gHi - hi*gLo)/(gHi - gLo);
-        const scalar gs = g(std::exp(s));
-        if (mag(gs) <= 1e-15*alphaOld || hi - lo < 1e-13)
+        if (!linear && hi - lo < 1e-3)
         {
-            return std::exp(s);
+            // The same bracket in alpha (signs of g kept)
+            lo = std::exp(lo);
+            hi = std::exp(hi);
+            linear = true;
+            side = 0;
+        }
+        const scalar s = (lo*gHi - hi*gLo)/(gHi - gLo);
+        const scalar alpha = linear ? s : std::exp(s);
+        if (linear && !(s > lo && s < hi))
+        {
+            // The bracket is down to adjacent values of alpha
+            return mag(gLo) < mag(gHi) ? lo : hi;
+        }
+        const scalar gs = g(alpha);
+        if (gs == 0 || (linear && hi - lo <= 4*eps*hi))
+        {
+            return alpha;
         }
         if (gs > 0)
         {
@@ -132,7 +155,7 @@ Foam::scalar Foam::waterModels::nonEquilibrium::relaxedAlphaL
             side = -1;
         }
     }
-    return std::exp(0.5*(lo + hi));
+    return linear ? 0.5*(lo + hi) : std::exp(0.5*(lo + hi));
 }
 
 
