@@ -4,6 +4,7 @@
 
 #include "pendularNewton.H"
 #include <cmath>
+#include <functional>
 #include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -524,6 +525,260 @@ bool Foam::pendularNewton::chordStep
             << u[0] << ", p " << u[1] << ", W " << u[2] << ")" << endl;
     }
     return true;
+}
+
+
+Foam::label Foam::pendularNewton::frontFirstIterate
+(
+    const pendularResidual& res,
+    scalarField& x,
+    const scalarField& Tn,
+    const scalarField& Wn,
+    const scalarField& rateT,
+    const scalarField& rateW,
+    const scalar dtLast,
+    const scalar dt
+) const
+{
+    const pendularMedium& medium = res.medium();
+    const scalarField& phi = medium.porosity().primitiveField();
+    const labelList& phase = res.phases();
+    const label nCells = x.size()/3;
+    const label K = frontHops_;
+
+    // y: per cell (q = W/W_s at the start of the sub-step and q at the
+    // start of the last accepted one, -1 where the cell has no kink, and
+    // below its hops from the dry side)
+    scalarField y(3*nCells, Zero);
+    for (label c = 0; c < nCells; ++c)
+    {
+        const scalar Wk = medium.kinkWater(phi[c], Tn[c]);
+        const scalar WkPrev =
+            medium.kinkWater(phi[c], Tn[c] - dtLast*rateT[c]);
+        const bool kink = phase[c] == pendularResidual::bothPhases && Wk > 0;
+        y[3*c] = kink ? Wn[c]/Wk : -1;
+        y[3*c + 1] =
+            kink && WkPrev > 0 ? (Wn[c] - dtLast*rateW[c])/WkPrev : -1;
+    }
+
+    // The hops of each cell from the dry side (q < 1: 0), at most K + 1
+    // (Jacobi sweeps, exchanged across the coupled patches); d kept in
+    // the third component of y
+    for (label c = 0; c < nCells; ++c)
+    {
+        y[3*c + 2] = y[3*c] >= 0 && y[3*c] < 1 ? 0 : K + 1;
+    }
+    for (label k = 0; k < K; ++k)
+    {
+        const tmp<scalarField> tyNbr = res.neighbourStates(y);
+        const scalarField& yNbr = tyNbr();
+        scalarField d(nCells);
+        for (label c = 0; c < nCells; ++c)
+        {
+            d[c] = y[3*c + 2];
+            if (y[3*c] < 0)
+            {
+                continue;
+            }
+            res.forCellFaces
+            (
+                c,
+                [&](const label, const label nbr, const label bFacei)
+                {
+                    const scalar* yn =
+                        nbr >= 0 ? &y[3*nbr]
+                      : bFacei >= 0 ? &yNbr[3*bFacei] : nullptr;
+                    if (yn && yn[0] >= 0)
+                    {
+                        d[c] = min(d[c], yn[2] + 1);
+                    }
+                }
+            );
+        }
+        for (label c = 0; c < nCells; ++c)
+        {
+            y[3*c + 2] = d[c];
+        }
+    }
+
+    // Each cell's upstream neighbour, the way the front came from: a
+    // cell on the dry side, the one with the least q below its own; a
+    // wet cell, the one nearer the dry side (the least d below its own,
+    // then the least q); an internal cell (up >= 0) or the cell across a
+    // coupled boundary face (upFace >= 0)
+    labelList up(nCells, -1), upFace(nCells, -1);
+    {
+        const tmp<scalarField> tyNbr = res.neighbourStates(y);
+        const scalarField& yNbr = tyNbr();
+        for (label c = 0; c < nCells; ++c)
+        {
+            if (y[3*c] < 0)
+            {
+                continue;
+            }
+            const bool dry = y[3*c + 2] == 0;
+            scalar qMin = y[3*c], dMin = y[3*c + 2];
+            res.forCellFaces
+            (
+                c,
+                [&](const label, const label nbr, const label bFacei)
+                {
+                    const scalar* yn =
+                        nbr >= 0 ? &y[3*nbr]
+                      : bFacei >= 0 ? &yNbr[3*bFacei] : nullptr;
+                    if (!yn || yn[0] < 0)
+                    {
+                        return;
+                    }
+                    const bool better =
+                        dry
+                      ? yn[0] < qMin
+                      : (
+                            yn[2] < dMin
+                         || (yn[2] == dMin && up[c] + upFace[c] > -2
+                             && yn[0] < qMin)
+                        );
+                    if (better)
+                    {
+                        qMin = yn[0];
+                        dMin = yn[2];
+                        up[c] = nbr;
+                        upFace[c] = bFacei;
+                    }
+                }
+            );
+        }
+    }
+
+    // The chains: visit(k, yk) with yk[3c], yk[3c + 1] the q and the last
+    // q of the cell k hops upstream of c (-1: none), k = 0..K (Jacobi
+    // sweeps, exchanged across the coupled patches at every sweep:
+    // independent of the decomposition; no (K + 1) values per cell kept)
+    auto chains =
+        [&](const std::function<void(label, const scalarField&)>& visit)
+    {
+        scalarField yk(y), yNext(3*nCells);
+        for (label k = 0; k <= K; ++k)
+        {
+            visit(k, yk);
+            if (k == K)
+            {
+                break;
+            }
+            const tmp<scalarField> tykNbr = res.neighbourStates(yk);
+            const scalarField& ykNbr = tykNbr();
+            for (label c = 0; c < nCells; ++c)
+            {
+                const scalar* from =
+                    up[c] >= 0 ? &yk[3*up[c]]
+                  : upFace[c] >= 0 ? &ykNbr[3*upFace[c]] : nullptr;
+                yNext[3*c] = from ? from[0] : -1;
+                yNext[3*c + 1] = from ? from[1] : -1;
+                yNext[3*c + 2] = 0;
+            }
+            yk = yNext;
+        }
+    };
+
+    // The kink's position along each cell's chain [hops], where q crosses
+    // 1 (log q linear between hops; the first crossing), at the start of
+    // this sub-step (pNow) and of the last one (pLast); -1 if the chain
+    // does not cross it within K hops
+    scalarField pNow(nCells, -1), pLast(nCells, -1);
+    scalarField qBefore(nCells), qpBefore(nCells);
+    auto crossing = [](const scalar v0, const scalar v1, const label k)
+    {
+        const scalar a = Foam::log(v0);
+        const scalar b = Foam::log(v1);
+        return k + a/(a - b);
+    };
+    chains
+    (
+        [&](const label k, const scalarField& yk)
+        {
+            for (label c = 0; c < nCells; ++c)
+            {
+                const scalar qk = yk[3*c], qpk = yk[3*c + 1];
+                if (k > 0)
+                {
+                    if (pNow[c] < 0 && qBefore[c] >= 1 && qk > 0 && qk < 1)
+                    {
+                        pNow[c] = crossing(qBefore[c], qk, k - 1);
+                    }
+                    if
+                    (
+                        pLast[c] < 0 && qpBefore[c] >= 1
+                     && qpk > 0 && qpk < 1
+                    )
+                    {
+                        pLast[c] = crossing(qpBefore[c], qpk, k - 1);
+                    }
+                }
+                qBefore[c] = qk;
+                qpBefore[c] = qpk;
+            }
+        }
+    );
+
+    // A cell takes the q of the cell S hops upstream, S the hops the
+    // kink's position along its chain moved in the last sub-step times
+    // dt/dtLast (the front moving at its last pace), interpolated in
+    // log q between hops k0 and k0 + 1 (-1: the cell is left alone)
+    labelList k0(nCells, -1);
+    scalarField f(nCells, Zero), q0(nCells, -1), q1(nCells, -1);
+    for (label c = 0; c < nCells; ++c)
+    {
+        if (y[3*c] < 0 || pNow[c] < 0 || pLast[c] < 0)
+        {
+            continue;
+        }
+        const scalar S = (pLast[c] - pNow[c])*dt/dtLast;
+        if (S >= frontMinHops_ && label(S) < K)
+        {
+            k0[c] = label(S);
+            f[c] = S - k0[c];
+        }
+    }
+    chains
+    (
+        [&](const label k, const scalarField& yk)
+        {
+            for (label c = 0; c < nCells; ++c)
+            {
+                if (k == k0[c])
+                {
+                    q0[c] = yk[3*c];
+                }
+                else if (k0[c] >= 0 && k == k0[c] + 1)
+                {
+                    q1[c] = yk[3*c];
+                }
+            }
+        }
+    );
+    label n = 0;
+    for (label c = 0; c < nCells; ++c)
+    {
+        if (k0[c] < 0 || q0[c] <= 0 || q1[c] <= 0)
+        {
+            continue;
+        }
+        const scalar qNew =
+            Foam::exp((1 - f[c])*Foam::log(q0[c]) + f[c]*Foam::log(q1[c]));
+        const scalar Wk = medium.kinkWater(phi[c], x[3*c]);
+        if (Wk > 0 && min(y[3*c], qNew) < frontWindow_)
+        {
+            x[3*c + 2] = qNew*Wk;
+            ++n;
+        }
+    }
+    reduce(n, sumOp<label>());
+    if (verbose_)
+    {
+        Info<< "    Newton: first iterate of " << n << " cell(s) near a"
+            << " drying front from the front's last pace" << endl;
+    }
+    return n;
 }
 
 
