@@ -198,6 +198,8 @@ int main(int argc, char *argv[])
             IOobject::NO_WRITE
         )
     );
+    // (named after its file on every rank in a parallel run)
+    checkedRead::nameAfterFile(fitDict);
     checkedRead::checkKeywords
     (
         fitDict,

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pendularResidual.H"
+#include "meshNonOrthogonality.H"
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
 #include "zeroGradientFvPatchFields.H"
@@ -521,26 +522,13 @@ Foam::scalar Foam::pendularResidual::maxNonOrthogonality
     const fvMesh& mesh
 )
 {
-    // |k_f| = tan of the angle between n_f and d_f (k_f is normal to n_f:
-    // k_f . n_f = 1 - (n_f . d_f)/(n_f . d_f)); 0 on the faces of patches
-    // that are not coupled
-    const surfaceVectorField& k = mesh.nonOrthCorrectionVectors();
-    scalar tanMax = max(mag(k.primitiveField()));
-    forAll(k.boundaryField(), patchi)
-    {
-        if (k.boundaryField()[patchi].coupled())
-        {
-            tanMax = max(tanMax, max(mag(k.boundaryField()[patchi])));
-        }
-    }
-    reduce(tanMax, maxOp<scalar>());
-    return radToDeg(Foam::atan(tanMax));
+    return meshNonOrthogonality::New(mesh).maxDegrees();
 }
 
 
 bool Foam::pendularResidual::nonOrthogonalMesh(const fvMesh& mesh)
 {
-    return Foam::tan(degToRad(maxNonOrthogonality(mesh))) > 1e-10;
+    return meshNonOrthogonality::New(mesh).corrected();
 }
 
 

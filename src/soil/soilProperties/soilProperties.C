@@ -150,7 +150,9 @@ Foam::soilProperties::soilProperties(const fvMesh& mesh, const layout aliasLayou
             IOobject::NO_WRITE
         )
     ),
-    mesh_(mesh),
+    // (named after its file on every rank before anything is read from it:
+    // checkedRead::nameAfterFile)
+    mesh_((checkedRead::nameAfterFile(*this), mesh)),
     layout_
     (
         IOobject::name() == fileName(aliasLayout) ? aliasLayout : layout::soil
