@@ -29,7 +29,7 @@ for case, N, refN, runs in (
         ('column100', 100, 200, ('segregated', 'newton')),
         ('column500', 500, 500, ('segregated', 'newton', 'newton_before', 'newton_dT1', 'newton_dT4',
                                'bdf2_tol0.03', 'bdf2_tol0.1', 'bdf2_tol0.1_before', 'bdf2_tol0.3',
-                               'bdf2_tol1'))):
+                               'bdf2_tol1', 'defaults'))):
     depth = [H - (i + 0.5)*H/N for i in range(N)]
     for engine in runs:
         d = os.path.join(work, '%s_%s' % (case, engine))

@@ -50,6 +50,9 @@ Foam::pendularResidual::pendularResidual
     W0_(fvMesh_.nCells()),
     A0_(fvMesh_.nCells()),
     E0_(fvMesh_.nCells()),
+    WH_(fvMesh_.nCells(), Zero),
+    AH_(fvMesh_.nCells(), Zero),
+    EH_(fvMesh_.nCells(), Zero),
     a0_(1),
     a0W_(fvMesh_.nCells(), 1),
     eulerCells_(),
@@ -209,16 +212,20 @@ void Foam::pendularResidual::bdf2
             // W >= 0 out of reach: backward Euler for this water
             a0W_[celli] = 1;
             W0_[celli] = Wold[celli];
+            WH_[celli] = 0;
             cells.append(celli);
             history.append(H - Wold[celli]);
         }
         else
         {
             a0W_[celli] = a0;
-            W0_[celli] = H;
+            W0_[celli] = Wold[celli];
+            WH_[celli] = a2*(Wold[celli] - WOlder[celli]);
         }
-        A0_[celli] = a1*Aold[celli] - a2*AOlder[celli];
-        E0_[celli] = a1*Eold[celli] - a2*EOlder[celli];
+        A0_[celli] = Aold[celli];
+        AH_[celli] = a2*(Aold[celli] - AOlder[celli]);
+        E0_[celli] = Eold[celli];
+        EH_[celli] = a2*(Eold[celli] - EOlder[celli]);
     }
     eulerCells_.transfer(cells);
     eulerHistory_.transfer(history);
@@ -1014,9 +1021,9 @@ void Foam::pendularResidual::cellTerm
 {
     const cellState& s = state(celli, x);
     const scalar VByDt = fvMesh_.V()[celli]/dt_;
-    S[0] = VByDt*(a0W_[celli]*s.W - W0_[celli]);
-    S[1] = VByDt*(a0_*s.A - A0_[celli]);
-    S[2] = VByDt*(a0_*s.E - E0_[celli]);
+    S[0] = VByDt*(a0W_[celli]*(s.W - W0_[celli]) - WH_[celli]);
+    S[1] = VByDt*(a0_*(s.A - A0_[celli]) - AH_[celli]);
+    S[2] = VByDt*(a0_*(s.E - E0_[celli]) - EH_[celli]);
 }
 
 
