@@ -70,8 +70,10 @@ inline void Foam::porousMedium::cellEnthalpy
 
     if (theta0 > 0)
     {
-        H += theta0*phaseChange_->enthalpy(T, TMax);
-        C += theta0*phaseChange_->capacity(T, TMax);
+        scalar h, c;
+        phaseChange_->enthalpyAndCapacity(T, TMax, h, c);
+        H += theta0*h;
+        C += theta0*c;
     }
 }
 

@@ -31,7 +31,13 @@ Foam::apparentHeatCapacityModels::energyConsistent::energyConsistent
 )
 :
     apparentHeatCapacityModel(dict, liquid, vapour)
-{}
+{
+    // Below the band sigma = 0.5 (1 + e) = 0 and the antiderivative
+    // S = sqrt(2) dT/2 (x + x e + g/sqrt(pi)) = 0 exactly (e = -1, g = 0):
+    // heatingEnthalpy = (rho C)_l T, sensibleCapacity(0) = (rho C)_l and
+    // latentCapacity = 0, to the bit
+    linearBelowBand_ = true;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
