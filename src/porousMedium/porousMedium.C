@@ -70,23 +70,30 @@ inline void Foam::porousMedium::cellEnthalpy
 
     if (theta0 > 0)
     {
-        H += theta0*phaseChange_->enthalpy(T, TMax);
-        C += theta0*phaseChange_->capacity(T, TMax);
+        scalar h, c;
+        phaseChange_->enthalpyAndCapacity(T, TMax, h, c);
+        H += theta0*h;
+        C += theta0*c;
     }
 }
 
 
-Foam::scalar Foam::porousMedium::kappaCell
+inline Foam::scalar Foam::porousMedium::kappaCell
 (
     const label celli,
     const scalar T,
     const scalar TMax
 ) const
 {
+    const scalar sigmaE = phaseChange_->evaporatedFraction(T, TMax);
+    if (sigmaE == 0 && kappaUndried_[celli] >= 0)
+    {
+        // theta_l = theta_0 (1 - 0) = theta_0: the value below, to the bit
+        return kappaUndried_[celli];
+    }
+
     const scalar phi = porosity()[celli];
-    const scalar thetaL =
-        waterContent_[celli]
-       *(1.0 - phaseChange_->evaporatedFraction(T, TMax));
+    const scalar thetaL = waterContent_[celli]*(1.0 - sigmaE);
 
     // Liquid fraction of the pores, alpha_l = theta_l/phi: the pore fluid
     // is alpha_l k_l + (1 - alpha_l) k_v (kappaPartiallySaturated), or
@@ -131,6 +138,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
             )
         )
     ),
+    kappaUndried_(),
     phaseChange_(nullptr)
 {
     // Unknown keywords: a misspelt one would be ignored or take a default
@@ -249,6 +257,17 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
     }
     phaseChange_ =
         apparentHeatCapacityModel::New(subDict("phaseChange"), liquid(), gas());
+
+    // (-1 where the law is not defined at theta_0/phi, tabulated beyond its
+    // table: kappaCell then calls the law, as before)
+    kappaUndried_.setSize(mesh.nCells());
+    forAll(kappaUndried_, celli)
+    {
+        const scalar phi = porosity()[celli];
+        const scalar alpha0 = phi > SMALL ? waterContent_[celli]/phi : 0;
+        kappaUndried_[celli] =
+            conductivityModel().definedAt(alpha0) ? kappaAt(celli, alpha0) : -1;
+    }
 
     Info<< "Porous medium: porosity " << gMin(porosity().primitiveField())
         << " to " << gMax(porosity().primitiveField())

@@ -31,7 +31,13 @@ Foam::apparentHeatCapacityModels::energyConsistent::energyConsistent
 )
 :
     apparentHeatCapacityModel(dict, liquid, vapour)
-{}
+{
+    // Below the band sigma = 0.5 (1 + e) = 0 and the antiderivative
+    // S = sqrt(2) dT/2 (x + x e + g/sqrt(pi)) = 0 exactly (e = -1, g = 0):
+    // heatingEnthalpy = (rho C)_l T, sensibleCapacity(0) = (rho C)_l and
+    // latentCapacity = 0, to the bit
+    linearBelowBand_ = true;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -46,6 +52,37 @@ Foam::scalar Foam::apparentHeatCapacityModels::energyConsistent::heatingEnthalpy
         liquid_.rhoCp()*T
       + (vapour_.rhoCp() - liquid_.rhoCp())*sigmaInt
       + liquid_.rho()*L_*sigma(T);
+}
+
+
+void Foam::apparentHeatCapacityModels::energyConsistent::
+heatingEnthalpyAndCapacity
+(
+    const scalar T,
+    scalar& h,
+    scalar& c
+) const
+{
+    // heatingEnthalpy(T), sensibleCapacity(sigma(T)) and latentCapacity(T)
+    // written out with their operations in the same order (the same values
+    // to the bit: tests/porousModels section 5), erf and exp taken once
+    // instead of four times
+    const scalar xi = x(T);
+    scalar e, g;
+    erfAndGauss(xi, e, g);
+    const scalar sigmaInt =
+        0.5*sqrt(2.0)*dT_
+       *(xi + xi*e + g/sqrt(constant::mathematical::pi));
+    const scalar s = 0.5*(1.0 + e);
+    const scalar dSigma = g/(sqrt(2.0*constant::mathematical::pi)*dT_);
+
+    h =
+        liquid_.rhoCp()*T
+      + (vapour_.rhoCp() - liquid_.rhoCp())*sigmaInt
+      + liquid_.rho()*L_*s;
+    c =
+        energyConsistent::sensibleCapacity(s)
+      + liquid_.rho()*L_*dSigma;
 }
 
 

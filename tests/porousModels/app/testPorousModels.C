@@ -20,7 +20,9 @@ Description
        heat is absorbed within Tv -+ 2 dT;
     4. irreversible drying: after heating to TMax = Tv + 3 dT, cooling
        follows the frozen-composition capacity sensibleCapacity(sigma(TMax))
-       and the enthalpy is continuous at TMax.
+       and the enthalpy is continuous at TMax;
+    5. enthalpyAndCapacity (porousMedium's evaluation, with its shortcut
+       below the band) gives enthalpy() and capacity() to the bit.
 
     The porousMedium-level formulas need a mesh and are not tested here.
 
@@ -516,6 +518,65 @@ int main()
                 type.c_str()),
             mRev->enthalpy(TCool, TMax), mRev->heatingEnthalpy(TCool), 1e-12
         );
+    }
+
+
+    // ---------------------------------------------------------------------
+    section
+    (
+        "5. enthalpyAndCapacity = (enthalpy, capacity) to the bit"
+    );
+
+    // porousMedium evaluates H and C by enthalpyAndCapacity, which skips
+    // the virtual calls below the band for energyConsistent
+    // (linearBelowBand_): it must give the very values of enthalpy() and
+    // capacity(), which always take them, so that the iterates of ahcFoam
+    // do not change. T from 250 K to 700 K in steps of 0.37 K (through the
+    // band's edge x = -6, T = Tv - 6 sqrt(2) dT, at dT 1, 2, 5 K), TMax at
+    // T (heating), below the band, at its edge, in it and above it
+    // (cooling when T < TMax); both models, irreversible or not: the
+    // largest difference must be exactly 0 (one check per model and
+    // setting; any rounding difference fails)
+    for (const word& type : ahcTypes)
+    {
+        for (const bool irreversible : {true, false})
+        {
+            for (const scalar dT : {1.0, 2.0, 5.0})
+            {
+                autoPtr<apparentHeatCapacityModel> m
+                (
+                    ahc(type, dT, irreversible)
+                );
+                const scalar edge = Tv - 6*std::sqrt(2.0)*dT;
+                scalar maxDiff = 0;
+                label nDiff = 0, nPoints = 0;
+                for (scalar T = 250; T < 700; T += 0.37)
+                {
+                    for
+                    (
+                        const scalar TMax
+                      : {T, 300.0, edge, std::nextafter(edge, 0.0),
+                         std::nextafter(edge, 1e3), Tv, Tv + 3*dT, 650.0}
+                    )
+                    {
+                        scalar h, c;
+                        m->enthalpyAndCapacity(T, TMax, h, c);
+                        const scalar dh = h - m->enthalpy(T, TMax);
+                        const scalar dc = c - m->capacity(T, TMax);
+                        maxDiff = max(maxDiff, max(mag(dh), mag(dc)));
+                        nDiff += (dh != 0 || dc != 0);
+                        ++nPoints;
+                    }
+                }
+                checkTrue
+                (
+                    fmt("%s%s dT %g: %d points, %d differ",
+                        type.c_str(), irreversible ? "" : " reversible",
+                        dT, int(nPoints), int(nDiff)),
+                    nDiff == 0, maxDiff, 0, "max |diff|, exact"
+                );
+            }
+        }
     }
 
 
