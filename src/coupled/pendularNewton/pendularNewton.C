@@ -429,7 +429,6 @@ bool Foam::pendularNewton::valid
 {
     const scalar TLow = res.medium().minimumTemperature();
     const labelList& phase = res.phases();
-    const bool saturatedZone = res.medium().saturatedZone();
     bool ok = true;
     for (label c = 0; c < x.size()/3 && ok; ++c)
     {
@@ -444,22 +443,6 @@ bool Foam::pendularNewton::valid
          && (phase[c] == pendularResidual::liquidOnly ? p > -GREAT : p > 0)
          && p < GREAT
          && W >= 0 && W < GREAT;
-        // The air of a cell (without saturatedZone): p_a = p_g - p_w > 0
-        // (its state evaluated only inside the ranges above). Without it
-        // Newton accepted states with negative air in a cell heated past
-        // the boiling point of its gas pressure (p_a down to -93 kPa at
-        // T = 383.5 K, p_g = 52 kPa, alpha_l = 0.92) until an iterate
-        // reached p_g <= 0 (tutorials/wetHearthCoupled, "What does not
-        // run"); the sub-steps that avoid it are found by halving. Not
-        // with saturatedZone: a cell at its bubble point holds gas that
-        // is nearly pure vapour, p_a ~ 0, and refusing it stalled that
-        // tutorial's saturated pit on 200 cells (1714 sub-steps rejected
-        // by t = 3409 s of 21600; it runs to its end without the check)
-        if (ok && !saturatedZone)
-        {
-            const scalar pa = res.state(c, &x[3*c]).pa;
-            ok = std::isfinite(pa) && pa > 0;
-        }
     }
     reduce(ok, andOp<bool>());
     return ok;
