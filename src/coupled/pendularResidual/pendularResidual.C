@@ -534,6 +534,39 @@ void Foam::pendularResidual::updateBoundaryCoeffs
 }
 
 
+void Foam::pendularResidual::transferBoundaryValues
+(
+    volScalarField& T,
+    volScalarField& p,
+    volScalarField& pw
+) const
+{
+    volScalarField* fields[3] = {&T, &p, &pw};
+    forAll(bcFields_, k)
+    {
+        if (&fields[k]->mesh() != &fvMesh_)
+        {
+            FatalErrorInFunction
+                << "Field " << fields[k]->name() << " not on the residual's"
+                << " mesh" << exit(FatalError);
+        }
+        volScalarField::Boundary& bf = fields[k]->boundaryFieldRef();
+        forAll(bf, patchi)
+        {
+            if
+            (
+                bf[patchi].coupled()
+             || (k == 0 && isA<surfaceHeatLossFvPatchScalarField>(bf[patchi]))
+            )
+            {
+                continue;
+            }
+            bf[patchi] == bcFields_[k].boundaryField()[patchi];
+        }
+    }
+}
+
+
 bool Foam::pendularResidual::followsCondition(const fvPatch& patch)
 {
     return !patch.coupled() || isA<processorFvPatch>(patch);
