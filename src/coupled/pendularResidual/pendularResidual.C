@@ -520,15 +520,35 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 bcBoundary_[k][patchi].clear();
                 continue;
             }
-            // The coefficients at the iterate (a condition that depends on
+            if (polyPatch::constraintType(pf.patch().type()))
+            {
+                // wedge, symmetryPlane, symmetry (empty: no faces): the
+                // face value of a scalar is the cell's, exactly (the
+                // transform of a scalar is the identity: no flux), a = 1,
+                // b = 0, as before 2026-12-03 (bit for bit: the runs of
+                // tests/hearthCaseTemplatesPendular identical). Not their
+                // coefficients, a = 0 and b = phi_b for a scalar wedge
+                // (OpenFOAM's implicit form, the face held at its last
+                // value: exact at the iterate, a spurious derivative
+                // k delta |S| in the Jacobian). Taken before the
+                // evaluation (b = the last iterate's phi_b - a phi_c, the
+                // change of phi_c), they conducted through the wedges
+                // (measured: 3 and 4 rejected sub-steps in that test)
+                bcInternal_[k][patchi] = scalarField(pf.size(), 1);
+                bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
+                continue;
+            }
+            // The condition updated at the iterate (one that depends on
             // the state, e.g. a radiating surface, at the cells' values
-            // above), then evaluate(): its values, and the patch field
-            // ready to be updated again at the next iterate
+            // above) and evaluated there (its values; updated again at
+            // the next iterate), then its coefficients (a condition whose
+            // b is its value less a times the cell's, as OpenFOAM's
+            // transform conditions, is then consistent with the iterate)
             pf.updateCoeffs();
+            pf.evaluate();
             const tmp<scalarField> w(fvMesh_.weights().boundaryField()[patchi]);
             bcInternal_[k][patchi] = pf.valueInternalCoeffs(w);
             bcBoundary_[k][patchi] = pf.valueBoundaryCoeffs(w);
-            pf.evaluate();
         }
     }
 }
