@@ -48,6 +48,8 @@ Foam::pendularResidual::pendularResidual
     bcFields_(3),
     bcInternal_(),
     bcBoundary_(),
+    bcCell_(),
+    bcDifference_(),
     dt_(dt),
     W0_(fvMesh_.nCells()),
     A0_(fvMesh_.nCells()),
@@ -511,6 +513,8 @@ void Foam::pendularResidual::updateBoundaryCoeffs
         volScalarField::Boundary& bf = bcFields_[k].boundaryFieldRef();
         bcInternal_[k].setSize(bf.size());
         bcBoundary_[k].setSize(bf.size());
+        bcCell_[k].setSize(bf.size());
+        bcDifference_[k].setSize(bf.size());
         forAll(bf, patchi)
         {
             fvPatchScalarField& pf = bf[patchi];
@@ -518,8 +522,11 @@ void Foam::pendularResidual::updateBoundaryCoeffs
             {
                 bcInternal_[k][patchi].clear();
                 bcBoundary_[k][patchi].clear();
+                bcCell_[k][patchi].clear();
+                bcDifference_[k][patchi].clear();
                 continue;
             }
+            bcCell_[k][patchi] = pf.patchInternalField();
             if (polyPatch::constraintType(pf.patch().type()))
             {
                 // wedge, symmetryPlane, symmetry (empty: no faces): the
@@ -536,6 +543,7 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 // (measured: 3 and 4 rejected sub-steps in that test)
                 bcInternal_[k][patchi] = scalarField(pf.size(), 1);
                 bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
+                bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
                 continue;
             }
             // The condition updated at the iterate (one that depends on
@@ -549,6 +557,8 @@ void Foam::pendularResidual::updateBoundaryCoeffs
             const tmp<scalarField> w(fvMesh_.weights().boundaryField()[patchi]);
             bcInternal_[k][patchi] = pf.valueInternalCoeffs(w);
             bcBoundary_[k][patchi] = pf.valueBoundaryCoeffs(w);
+            bcDifference_[k][patchi] =
+                pf.snGrad()/pf.patch().deltaCoeffs();
         }
     }
 }
@@ -1199,7 +1209,16 @@ void Foam::pendularResidual::boundaryFlux
     const cellState b = boundaryState(patchi, i, c);
     const scalar magSf = patch.magSf()[i];
     const scalar dc = patch.deltaCoeffs()[i];
-    const scalar conduction = -c.kappa*(b.T - c.T)*dc*magSf;
+    // (phi_b - phi_c of the conditions, boundaryDifference; the surface
+    // balance's temperature of surfaceHeatLoss, boundaryState)
+    const scalar conduction =
+       -c.kappa
+       *(
+            isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi])
+          ? b.T - c.T
+          : boundaryDifference(0, patchi, i, c.T)
+        )
+       *dc*magSf;
 
     switch (kind_[patchi])
     {
@@ -1211,7 +1230,8 @@ void Foam::pendularResidual::boundaryFlux
             const liquidFlow* liquid = medium_.liquidFlowPtr();
             const scalar q =
                -c.Kg*(liquid ? liquid->krg(c.alpha) : 1)
-               /medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
+               /medium_.gasViscosity()*boundaryDifference(1, patchi, i, c.p)
+               *dc*magSf;
             const scalar j =
                 -c.Dv*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;
