@@ -46,6 +46,11 @@ Foam::pendularResidual::pendularResidual
     pw_(pw),
     pRef_(pRef),
     kind_(fvMesh_.boundary().size(), patchKind::other),
+    bcFields_(3),
+    bcInternal_(),
+    bcBoundary_(),
+    bcCell_(),
+    bcDifference_(),
     dt_(dt),
     W0_(fvMesh_.nCells()),
     A0_(fvMesh_.nCells()),
@@ -103,17 +108,28 @@ Foam::pendularResidual::pendularResidual
     // The patch kinds of pendularFoam (pendularState); other coupled
     // patches than processor ones are refused
     kind_ = pendularState::patchKinds(p_, pw_);
-    forAll(fvMesh_.boundary(), patchi)
+    checkCoupledPatches(fvMesh_);
+
+    // The boundary conditions of T, p and pw at the fields' values
+    // (collective)
+    forAll(bcFields_, k)
     {
-        const fvPatch& patch = fvMesh_.boundary()[patchi];
-        if (patch.coupled() && !isA<processorFvPatch>(patch))
-        {
-            FatalErrorInFunction
-                << "pendularResidual: coupled patch " << patch.name()
-                << " (" << patch.type() << ") not supported: processor"
-                << " patches only" << exit(FatalError);
-        }
+        const volScalarField& fld = k == 0 ? T_ : k == 1 ? p_ : pw_;
+        bcFields_.set
+        (
+            k,
+            new volScalarField
+            (
+                IOobject
+                (
+                    fld.name() + "BoundaryCoeffs", fld.instance(), fvMesh_,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                fld
+            )
+        );
     }
+    updateBoundaryCoeffs(nullptr);
 
     // The porosity and guess of the cells across processor patches
     // (collective)
@@ -476,50 +492,146 @@ Foam::scalar Foam::pendularResidual::waterEulerCorrection
 }
 
 
-bool Foam::pendularResidual::followsCondition
+void Foam::pendularResidual::updateBoundaryCoeffs
 (
-    const fvPatchScalarField& pf,
-    const bool temperature
-)
+    const scalarField* x
+) const
 {
-    return
-        (temperature && isA<surfaceHeatLossFvPatchScalarField>(pf))
-     || (
-            !isA<mixedFvPatchScalarField>(pf)
-         && (
-                pf.coupled()
-             || polyPatch::constraintType(pf.patch().type())
-             || pf.fixesValue()
-             || isA<zeroGradientFvPatchScalarField>(pf)
-            )
-        );
+    volScalarField& Tc = bcFields_[0];
+    volScalarField& pc = bcFields_[1];
+    volScalarField& pwc = bcFields_[2];
+    const scalar R = medium_.R();
+    forAll(fvMesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = fvMesh_.boundary()[patchi];
+        if (!x || patch.coupled())
+        {
+            continue;
+        }
+        for (const label celli : patch.faceCells())
+        {
+            const cellState& c = state(celli, &(*x)[3*celli]);
+            Tc[celli] = c.T;
+            pc[celli] = c.p;
+            pwc[celli] = c.rhoW*R*c.T/medium_.Mw();
+        }
+    }
+    forAll(bcFields_, k)
+    {
+        volScalarField::Boundary& bf = bcFields_[k].boundaryFieldRef();
+        bcInternal_[k].setSize(bf.size());
+        bcBoundary_[k].setSize(bf.size());
+        bcCell_[k].setSize(bf.size());
+        bcDifference_[k].setSize(bf.size());
+        forAll(bf, patchi)
+        {
+            fvPatchScalarField& pf = bf[patchi];
+            if (pf.coupled())
+            {
+                bcInternal_[k][patchi].clear();
+                bcBoundary_[k][patchi].clear();
+                bcCell_[k][patchi].clear();
+                bcDifference_[k][patchi].clear();
+                continue;
+            }
+            bcCell_[k][patchi] = pf.patchInternalField();
+            if (polyPatch::constraintType(pf.patch().type()))
+            {
+                // wedge, symmetryPlane, symmetry (empty: no faces): the
+                // face value of a scalar is the cell's, exactly (the
+                // transform of a scalar is the identity: no flux), a = 1,
+                // b = 0, as before 2026-12-03 (bit for bit: the runs of
+                // tests/hearthCaseTemplatesPendular identical). Not their
+                // coefficients, a = 0 and b = phi_b for a scalar wedge
+                // (OpenFOAM's implicit form, the face held at its last
+                // value: exact at the iterate, a spurious derivative
+                // k delta |S| in the Jacobian). Taken before the
+                // evaluation (b = the last iterate's phi_b - a phi_c, the
+                // change of phi_c), they conducted through the wedges
+                // (measured: 3 and 4 rejected sub-steps in that test)
+                bcInternal_[k][patchi] = scalarField(pf.size(), 1);
+                bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
+                bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
+                continue;
+            }
+            // The condition updated at the iterate (one that depends on
+            // the state, e.g. a radiating surface, at the cells' values
+            // above) and evaluated there (its values; updated again at
+            // the next iterate), then its coefficients (a condition whose
+            // b is its value less a times the cell's, as OpenFOAM's
+            // transform conditions, is then consistent with the iterate)
+            pf.updateCoeffs();
+            pf.evaluate();
+            const tmp<scalarField> w(fvMesh_.weights().boundaryField()[patchi]);
+            bcInternal_[k][patchi] = pf.valueInternalCoeffs(w);
+            bcBoundary_[k][patchi] = pf.valueBoundaryCoeffs(w);
+            bcDifference_[k][patchi] =
+                pf.snGrad()/pf.patch().deltaCoeffs();
+        }
+    }
 }
 
 
-void Foam::pendularResidual::checkTemperatureConditions
+void Foam::pendularResidual::transferBoundaryValues
 (
-    const volScalarField& T
-)
+    volScalarField& T,
+    volScalarField& p,
+    volScalarField& pw
+) const
 {
-    forAll(T.boundaryField(), patchi)
+    volScalarField* fields[3] = {&T, &p, &pw};
+    forAll(bcFields_, k)
     {
-        const fvPatchScalarField& Tp = T.boundaryField()[patchi];
-        if (followsCondition(Tp, true))
+        if (&fields[k]->mesh() != &fvMesh_)
+        {
+            FatalErrorInFunction
+                << "Field " << fields[k]->name() << " not on the residual's"
+                << " mesh" << exit(FatalError);
+        }
+        volScalarField::Boundary& bf = fields[k]->boundaryFieldRef();
+        forAll(bf, patchi)
+        {
+            if
+            (
+                bf[patchi].coupled()
+             || (k == 0 && isA<surfaceHeatLossFvPatchScalarField>(bf[patchi]))
+            )
+            {
+                continue;
+            }
+            bf[patchi] == bcFields_[k].boundaryField()[patchi];
+        }
+    }
+}
+
+
+bool Foam::pendularResidual::followsCondition(const fvPatch& patch)
+{
+    return !patch.coupled() || isA<processorFvPatch>(patch);
+}
+
+
+void Foam::pendularResidual::checkCoupledPatches(const fvMesh& mesh)
+{
+    for (const fvPatch& patch : mesh.boundary())
+    {
+        if (followsCondition(patch))
         {
             continue;
         }
         FatalIOError
         (
-            FUNCTION_NAME, __FILE__, __LINE__, T.objectPath(), -1, -1
+            FUNCTION_NAME, __FILE__, __LINE__,
+            mesh.boundaryMesh().objectPath(), -1, -1
         )
-            << "Temperature condition '" << Tp.type() << "' on patch '"
-            << Tp.patch().name() << "' of " << T.objectPath() << ": the"
-            << " Newton engine (nonlinear { engine newton; }) conducts"
-            << " through a patch only where T is fixed or where"
-            << " surfaceHeatLoss gives the surface balance; valid: a"
-            << " fixed-value type (fixedValue, uniformFixedValue,"
-            << " fireTemperature, ...), surfaceHeatLoss or zeroGradient"
-            << " (insulated)" << exit(FatalIOError);
+            << "Patch '" << patch.name() << "' of type '" << patch.type()
+            << "' in " << mesh.boundaryMesh().objectPath() << ": the"
+            << " Newton engine (nonlinear { engine newton; }) couples cells"
+            << " across processor patches only; valid patch types with"
+            << " engine newton: patch, wall, symmetryPlane, symmetry, wedge,"
+            << " empty, processor (or nonlinear { engine segregated; },"
+            << " the default with a " << patch.type() << " patch)"
+            << exit(FatalIOError);
     }
 }
 
@@ -627,7 +739,9 @@ void Foam::pendularResidual::updateDeferred
     const scalarField&
 ) const
 {
-    // (the same on every rank: nonOrthogonalMesh is reduced)
+    // The boundary conditions at x (collective), then the non-orthogonal
+    // corrections (the same on every rank: nonOrthogonalMesh is reduced)
+    updateBoundaryCoeffs(&x);
     if (!nonOrthCorrected_)
     {
         return;
@@ -891,17 +1005,22 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
     const cellState& c
 ) const
 {
-    // pendularState::update(): T, p, pw from their conditions (the cell's where not
-    // fixed), the densities and enthalpies from those; K_g and k_e
-    // zeroGradient
+    // pendularState::update(): T, p, pw from their conditions, the
+    // densities and enthalpies from those; K_g and k_e zeroGradient
     const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
-    const fvPatchScalarField& pp = p_.boundaryField()[patchi];
-    const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
     const scalar R = medium_.R();
     const scalar pwc = c.rhoW*R*c.T/medium_.Mw();
 
+    // Each face value from its cell's by the patch field's own
+    // linearisation, phi_b = a phi_c + b (valueInternalCoeffs,
+    // valueBoundaryCoeffs at the last iterate, updateBoundaryCoeffs), as
+    // fvm::laplacian's boundary coefficients and the snGrad of
+    // pendularState's fluxes: a fixed value (a = 0), zeroGradient (a = 1,
+    // b = 0), fixedGradient g (a = 1, b = g/delta), mixed with value
+    // fraction f (a = 1 - f, b = f phi_ref + (1 - f) g_ref/delta), any
+    // other condition alike
     cellState b(c);
-    b.T = Tp.fixesValue() ? Tp[i] : c.T;
+    b.T = boundaryValue(0, patchi, i, c.T);
     if (isA<surfaceHeatLossFvPatchScalarField>(Tp))
     {
         // The surface temperature balancing the condition's exact flux
@@ -915,8 +1034,8 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
                 c.T, c.kappa*fvMesh_.boundary()[patchi].deltaCoeffs()[i]
             );
     }
-    b.p = pp.fixesValue() ? pp[i] : c.p;
-    b.pw = pwp.fixesValue() ? pwp[i] : pwc;
+    b.p = boundaryValue(1, patchi, i, c.p);
+    b.pw = boundaryValue(2, patchi, i, pwc);
     b.pa = b.p - b.pw;
     b.rhoW = medium_.Mw()*b.pw/(R*b.T);
     b.rhoA = medium_.Ma()*b.pa/(R*b.T);
@@ -1085,7 +1204,16 @@ void Foam::pendularResidual::boundaryFlux
     const cellState b = boundaryState(patchi, i, c);
     const scalar magSf = patch.magSf()[i];
     const scalar dc = patch.deltaCoeffs()[i];
-    const scalar conduction = -c.kappa*(b.T - c.T)*dc*magSf;
+    // (phi_b - phi_c of the conditions, boundaryDifference; the surface
+    // balance's temperature of surfaceHeatLoss, boundaryState)
+    const scalar conduction =
+       -c.kappa
+       *(
+            isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi])
+          ? b.T - c.T
+          : boundaryDifference(0, patchi, i, c.T)
+        )
+       *dc*magSf;
 
     switch (kind_[patchi])
     {
@@ -1097,7 +1225,8 @@ void Foam::pendularResidual::boundaryFlux
             const liquidFlow* liquid = medium_.liquidFlowPtr();
             const scalar q =
                -c.Kg*(liquid ? liquid->krg(c.alpha) : 1)
-               /medium_.gasViscosity()*(b.p - c.p)*dc*magSf;
+               /medium_.gasViscosity()*boundaryDifference(1, patchi, i, c.p)
+               *dc*magSf;
             const scalar j =
                 -c.Dv*b.rhoG*(b.omega - c.omega)
                 *dc*magSf;
