@@ -54,6 +54,13 @@ Foam::blockSystem::preconditionerTypeNames
     { preconditionerType::none, "none" },
 });
 
+const Foam::Enum<Foam::blockSystem::forcingType>
+Foam::blockSystem::forcingTypeNames
+({
+    { forcingType::none, "none" },
+    { forcingType::eisenstatWalker, "eisenstatWalker" },
+});
+
 const Foam::Enum<Foam::blockSystem::subPreconditionerType>
 Foam::blockSystem::subPreconditionerTypeNames
 ({
@@ -283,7 +290,7 @@ void Foam::blockSystem::createSolver
         {
             "matrix", "solver", "preconditioner", "subPreconditioner",
             "iluLevels", "asmOverlap", "tolerance", "relTol", "maxIter",
-            "gmresRestart", "petscOptions"
+            "gmresRestart", "petscOptions", "forcing", "forcingMax"
         },
         "block solver settings (blockSystem)"
     );
@@ -323,6 +330,22 @@ void Foam::blockSystem::createSolver
     }
     const label maxIter =
         checkedRead::getLabelOrDefault(dict, "maxIter", 1000, 1);
+    relTol_ = relTol;
+    forcing_ =
+        forcingTypeNames.getOrDefault("forcing", dict, forcingType::none);
+    forcingMax_ =
+        checkedRead::getOrDefault
+        (
+            dict, "forcingMax", dimless, 0.01, checkedRead::closedOpen(0, 1)
+        ).value();
+    if (forcing_ == forcingType::eisenstatWalker && forcingMax_ < relTol)
+    {
+        FatalIOErrorInFunction(dict)
+            << "forcingMax " << forcingMax_ << " < relTol " << relTol
+            << " in " << dict.name() << ": the forcing term is bounded to"
+            << " [relTol, forcingMax]; give forcingMax in [relTol, 1)"
+            << exit(FatalIOError);
+    }
     const label restart =
         checkedRead::getLabelOrDefault(dict, "gmresRestart", 50, 1, 10000);
     const matrixType mType =
@@ -751,6 +774,29 @@ void Foam::blockSystem::checkFactorSolver
 }
 
 
+Foam::scalar Foam::blockSystem::forcingTerm(const scalar normB) const
+{
+    // Eisenstat and Walker (1996), choice 2 and its safeguard; gamma 0.9,
+    // alpha 2 (local convergence of order alpha)
+    const scalar gamma = 0.9;
+    scalar eta = forcingMax_;
+    if (forcingNorm_ > 0)
+    {
+        eta = gamma*sqr(normB/forcingNorm_);
+        const scalar safeguard = gamma*sqr(forcingEta_);
+        if (safeguard > 0.1)
+        {
+            eta = max(eta, safeguard);
+        }
+        eta = min(eta, forcingMax_);
+    }
+    eta = max(eta, relTol_);
+    forcingNorm_ = normB;
+    forcingEta_ = eta;
+    return eta;
+}
+
+
 void Foam::blockSystem::checkBlock
 (
     const scalarSquareMatrix& m,
@@ -824,7 +870,12 @@ Foam::blockSystem::blockSystem
     solverName_(),
     prefix_(),
     faceValues_(4*nBlock*nBlock),
-    failure_()
+    failure_(),
+    relTol_(0),
+    forcing_(forcingType::none),
+    forcingMax_(0.01),
+    forcingNorm_(0),
+    forcingEta_(0)
 {
     petscSession::checkActive("blockSystem");
     if (nBlock < 1)
@@ -1001,6 +1052,22 @@ Foam::solverPerformance Foam::blockSystem::solve
     const scalar initialResidual = Foam::sqrt(gSumSqr(r));
 
     PetscErrorCode ierr = 0;
+    if (finiteSource && forcing_ == forcingType::eisenstatWalker)
+    {
+        const scalar eta = forcingTerm(Foam::sqrt(gSumSqr(source_)));
+        PetscReal rtol, abstol, dtol;
+        PetscInt maxits;
+        petscSession::check
+        (
+            KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &maxits),
+            "KSPGetTolerances"
+        );
+        petscSession::check
+        (
+            KSPSetTolerances(ksp_, eta, abstol, dtol, maxits),
+            "KSPSetTolerances"
+        );
+    }
     if (finiteSource)
     {
         PetscScalar* p;

@@ -879,6 +879,9 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     scalar rPrev = 0;
     // Linear solves stopped short of their tolerance in this solve
     label nShort = 0;
+    // (blockSystem's forcing eisenstatWalker, if set: the inexact Newton
+    // forcing term restarts from its largest value)
+    system_.resetForcing();
     for (label iter = 0; ; ++iter)
     {
         // The residual; its Jacobian only if the iterations go on (the
