@@ -338,6 +338,16 @@ void Foam::blockSystem::createSolver
         (
             dict, "forcingMax", dimless, 0.01, checkedRead::closedOpen(0, 1)
         ).value();
+    if (forcing_ == forcingType::none && dict.found("forcingMax"))
+    {
+        // A bound that would be silently unused
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'forcingMax' in " << dict.name() << " with forcing"
+            << " none: it bounds the forcing term of forcing"
+            << " eisenstatWalker only; valid: remove it, or give forcing"
+            << " eisenstatWalker"
+            << exit(FatalIOError);
+    }
     if (forcing_ == forcingType::eisenstatWalker && forcingMax_ < relTol)
     {
         FatalIOErrorInFunction(dict)
