@@ -46,6 +46,7 @@ Foam::pendularResidual::pendularResidual
     pw_(pw),
     pRef_(pRef),
     kind_(fvMesh_.boundary().size(), patchKind::other),
+    surfaceBalance_(fvMesh_.boundary().size(), false),
     bcFields_(3),
     bcInternal_(),
     bcBoundary_(),
@@ -108,6 +109,11 @@ Foam::pendularResidual::pendularResidual
     // The patch kinds of pendularFoam (pendularState); other coupled
     // patches than processor ones are refused
     kind_ = pendularState::patchKinds(p_, pw_);
+    forAll(surfaceBalance_, patchi)
+    {
+        surfaceBalance_[patchi] =
+            isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi]);
+    }
     checkCoupledPatches(fvMesh_);
 
     // The boundary conditions of T, p and pw at the fields' values
@@ -1021,7 +1027,7 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
     // other condition alike
     cellState b(c);
     b.T = boundaryValue(0, patchi, i, c.T);
-    if (isA<surfaceHeatLossFvPatchScalarField>(Tp))
+    if (surfaceBalance_[patchi])
     {
         // The surface temperature balancing the condition's exact flux
         // with the half cell's conduction (as pendularState::update), not
@@ -1209,7 +1215,7 @@ void Foam::pendularResidual::boundaryFlux
     const scalar conduction =
        -c.kappa
        *(
-            isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi])
+            surfaceBalance_[patchi]
           ? b.T - c.T
           : boundaryDifference(0, patchi, i, c.T)
         )
