@@ -11,6 +11,7 @@
 #include "waterModel.H"
 #include "liquidFlow.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
+#include "relativeHumidityFvPatchScalarField.H"
 #include "mixedFvPatchFields.H"
 #include "calculatedFvPatchFields.H"
 #include "unitConversion.H"
@@ -47,6 +48,7 @@ Foam::pendularResidual::pendularResidual
     pRef_(pRef),
     kind_(fvMesh_.boundary().size(), patchKind::other),
     surfaceBalance_(fvMesh_.boundary().size(), false),
+    humidity_(fvMesh_.boundary().size(), scalar(-1)),
     bcFields_(3),
     bcInternal_(),
     bcBoundary_(),
@@ -113,6 +115,16 @@ Foam::pendularResidual::pendularResidual
     {
         surfaceBalance_[patchi] =
             isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi]);
+        const relativeHumidityFvPatchScalarField* rh =
+            isA<relativeHumidityFvPatchScalarField>
+            (
+                pw_.boundaryField()[patchi]
+            );
+        if (rh && rh->followsPatchTemperature())
+        {
+            // (the residual's life is one sub-step, at its new time)
+            humidity_[patchi] = rh->relativeHumidity();
+        }
     }
     checkCoupledPatches(fvMesh_);
 
@@ -558,6 +570,32 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 bcInternal_[k][patchi] = scalarField(pf.size(), 1);
                 bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
                 bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
+                continue;
+            }
+            if (k == 0 && surfaceBalance_[patchi])
+            {
+                // surfaceHeatLoss: the face temperature is its surface
+                // balance's (boundaryState), not its linearisation; the
+                // copy takes that value at the iterate (its update would
+                // look up pendularState's kappa, the start of the
+                // sub-step's)
+                bcInternal_[k][patchi] = scalarField(pf.size(), 1);
+                bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
+                bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
+                if (x)
+                {
+                    const labelUList& cells = pf.patch().faceCells();
+                    scalarField Tw(pf.size());
+                    forAll(Tw, i)
+                    {
+                        Tw[i] =
+                            boundaryState
+                            (
+                                patchi, i, state(cells[i], &(*x)[3*cells[i]])
+                            ).T;
+                    }
+                    pf == Tw;
+                }
                 continue;
             }
             // The condition updated at the iterate (one that depends on
@@ -1041,7 +1079,14 @@ Foam::pendularResidual::cellState Foam::pendularResidual::boundaryState
             );
     }
     b.p = boundaryValue(1, patchi, i, c.p);
-    b.pw = boundaryValue(2, patchi, i, pwc);
+    // relativeHumidity without airTemperature: p_w = RH p_wsat(T_b) of
+    // this face's T_b (the condition's, relativeHumidityFvPatchScalarField
+    // ::updateCoeffs, at the solution; its copy in bcFields_ would take
+    // T_b of the solver's T, the start of the sub-step, which it looks up)
+    b.pw =
+        humidity_[patchi] >= 0
+      ? humidity_[patchi]*medium_.saturationPressure(b.T)
+      : boundaryValue(2, patchi, i, pwc);
     b.pa = b.p - b.pw;
     b.rhoW = medium_.Mw()*b.pw/(R*b.T);
     b.rhoA = medium_.Ma()*b.pa/(R*b.T);

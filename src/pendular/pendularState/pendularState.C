@@ -810,16 +810,13 @@ void Foam::pendularState::update()
         hW_[celli] = s.hW;
         hA_[celli] = s.hA;
     }
-    alphaL_.correctBoundaryConditions();
-    pw_.correctBoundaryConditions();
-    p_.correctBoundaryConditions();
-    Kg_.correctBoundaryConditions();
-    Dv_.correctBoundaryConditions();
-    kappa_.correctBoundaryConditions();
-
     // Surface heat loss/flux: the surface temperature balancing the
     // condition's exact (nonlinear) flux with the half cell's conduction
-    // (pendularResidual::boundaryState), not its linearisation
+    // (pendularResidual::boundaryState), not its linearisation; set
+    // before the conditions of p_w, which may take it (relativeHumidity
+    // without airTemperature: p_w = RH p_wsat(T_b), as the Newton
+    // residual; before 2026-12-04 they took the condition's own value,
+    // its last evaluation)
     forAll(T_.boundaryField(), patchi)
     {
         if (isA<surfaceHeatLossFvPatchScalarField>(T_.boundaryField()[patchi]))
@@ -844,6 +841,13 @@ void Foam::pendularState::update()
             T_.boundaryFieldRef()[patchi] == Tw;
         }
     }
+
+    alphaL_.correctBoundaryConditions();
+    pw_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    Kg_.correctBoundaryConditions();
+    Dv_.correctBoundaryConditions();
+    kappa_.correctBoundaryConditions();
 
     // Boundary values of the derived fields (coupled patches: neighbours)
     pa_.boundaryFieldRef() = p_.boundaryField() - pw_.boundaryField();

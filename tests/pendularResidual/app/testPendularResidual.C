@@ -476,11 +476,18 @@ int main(int argc, char *argv[])
     const instantList times = runTime.times();
     const instant& last = times.last();
     const scalar dt = last.value();
+    // (the old time's fields not registered: a condition that looks up
+    // another field, relativeHumidity's T, takes the step's, as in
+    // pendularFoam; registered first, T0 was 'T', 2H)
     auto readField = [&](const word& name, const word& instance)
     {
         return volScalarField
         (
-            IOobject(name, instance, mesh, IOobject::MUST_READ),
+            IOobject
+            (
+                name, instance, mesh, IOobject::MUST_READ,
+                IOobject::NO_WRITE, instance != "0"
+            ),
             mesh
         );
     };
