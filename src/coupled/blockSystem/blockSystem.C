@@ -295,17 +295,24 @@ void Foam::blockSystem::createSolver
         "block solver settings (blockSystem)"
     );
 
+    // (the choices by checkedRead::getChoice: a word not among them is a
+    // FatalIOError naming the keyword too, which OpenFOAM's Enum does not)
     const solverType solver =
-        solverTypeNames.getOrDefault("solver", dict, solverType::gmres);
-    const preconditionerType pc =
-        preconditionerTypeNames.getOrDefault
+        checkedRead::getChoice
         (
-            "preconditioner", dict, preconditionerType::bjacobi
+            dict, "solver", solverTypeNames, solverType::gmres
+        );
+    const preconditionerType pc =
+        checkedRead::getChoice
+        (
+            dict, "preconditioner", preconditionerTypeNames,
+            preconditionerType::bjacobi
         );
     const subPreconditionerType subPc =
-        subPreconditionerTypeNames.getOrDefault
+        checkedRead::getChoice
         (
-            "subPreconditioner", dict, subPreconditionerType::ilu
+            dict, "subPreconditioner", subPreconditionerTypeNames,
+            subPreconditionerType::ilu
         );
     const label iluLevels =
         checkedRead::getLabelOrDefault(dict, "iluLevels", 0, 0, 10);
@@ -332,7 +339,10 @@ void Foam::blockSystem::createSolver
         checkedRead::getLabelOrDefault(dict, "maxIter", 1000, 1);
     relTol_ = relTol;
     forcing_ =
-        forcingTypeNames.getOrDefault("forcing", dict, forcingType::none);
+        checkedRead::getChoice
+        (
+            dict, "forcing", forcingTypeNames, forcingType::none
+        );
     forcingMax_ =
         checkedRead::getOrDefault
         (
@@ -359,7 +369,10 @@ void Foam::blockSystem::createSolver
     const label restart =
         checkedRead::getLabelOrDefault(dict, "gmresRestart", 50, 1, 10000);
     const matrixType mType =
-        matrixTypeNames.getOrDefault("matrix", dict, matrixType::baij);
+        checkedRead::getChoice
+        (
+            dict, "matrix", matrixTypeNames, matrixType::baij
+        );
     if (pc == preconditionerType::fieldsplit && mType == matrixType::baij)
     {
         FatalIOErrorInFunction(dict)

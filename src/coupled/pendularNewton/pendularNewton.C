@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pendularNewton.H"
+#include "checkedRead.H"
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -43,9 +44,10 @@ Foam::pendularNewton::pendularNewton
     linearHinted_
     (
         // (LU already in use: no hint to it)
-        blockSystem::preconditionerTypeNames.getOrDefault
+        checkedRead::getChoice
         (
-            "preconditioner", linearDict,
+            linearDict, "preconditioner",
+            blockSystem::preconditionerTypeNames,
             blockSystem::preconditionerType::bjacobi
         )
      == blockSystem::preconditionerType::lu
