@@ -885,6 +885,47 @@ void Foam::pendularState::update()
 }
 
 
+Foam::FixedList<Foam::List<Foam::scalarField>, 3>
+Foam::pendularState::boundaryValues() const
+{
+    FixedList<List<scalarField>, 3> values;
+    const volScalarField* fields[3] = {&T_, &p_, &pw_};
+    forAll(values, k)
+    {
+        const volScalarField::Boundary& bf = fields[k]->boundaryField();
+        values[k].setSize(bf.size());
+        forAll(bf, patchi)
+        {
+            if (!bf[patchi].coupled())
+            {
+                values[k][patchi] = bf[patchi];
+            }
+        }
+    }
+    return values;
+}
+
+
+void Foam::pendularState::restoreBoundaryValues
+(
+    const FixedList<List<scalarField>, 3>& values
+)
+{
+    volScalarField* fields[3] = {&T_, &p_, &pw_};
+    forAll(values, k)
+    {
+        volScalarField::Boundary& bf = fields[k]->boundaryFieldRef();
+        forAll(bf, patchi)
+        {
+            if (!bf[patchi].coupled())
+            {
+                bf[patchi] == values[k][patchi];
+            }
+        }
+    }
+}
+
+
 Foam::tmp<Foam::surfaceScalarField> Foam::pendularState::upwindFaces
 (
     const volScalarField& vf,
