@@ -77,7 +77,7 @@ Foam::pendularResidual::pendularResidual
     nbrPhase_(),
     liquidBoundaryCell_(),
     liquidOnlyScales_(xScale()),
-    nonOrthCorrected_(nonOrthogonalMesh(fvMesh_)),
+    nonOrthCorrected_(meshNonOrthogonality::New(fvMesh_).corrected()),
     snGradCorr_()
 {
     if (nonOrthCorrected_)
@@ -534,6 +534,18 @@ void Foam::pendularResidual::updateBoundaryCoeffs
             pwc[celli] = c.rhoW*R*c.T/medium_.Mw();
         }
     }
+    // The face value of field k on patch patchi is the cell's, a = 1, b =
+    // 0 (in place: the lists keep their storage from one evaluation to
+    // the next)
+    auto cellValue = [&](const label k, const label patchi, const label n)
+    {
+        bcInternal_[k][patchi].setSize(n);
+        bcInternal_[k][patchi] = 1;
+        bcBoundary_[k][patchi].setSize(n);
+        bcBoundary_[k][patchi] = Zero;
+        bcDifference_[k][patchi].setSize(n);
+        bcDifference_[k][patchi] = Zero;
+    };
     forAll(bcFields_, k)
     {
         volScalarField::Boundary& bf = bcFields_[k].boundaryFieldRef();
@@ -552,7 +564,7 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 bcDifference_[k][patchi].clear();
                 continue;
             }
-            bcCell_[k][patchi] = pf.patchInternalField();
+            pf.patchInternalField(bcCell_[k][patchi]);
             if (polyPatch::constraintType(pf.patch().type()))
             {
                 // wedge, symmetryPlane, symmetry (empty: no faces): the
@@ -567,9 +579,7 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 // evaluation (b = the last iterate's phi_b - a phi_c, the
                 // change of phi_c), they conducted through the wedges
                 // (measured: 3 and 4 rejected sub-steps in that test)
-                bcInternal_[k][patchi] = scalarField(pf.size(), 1);
-                bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
-                bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
+                cellValue(k, patchi, pf.size());
                 continue;
             }
             if (k == 0 && surfaceBalance_[patchi])
@@ -579,9 +589,7 @@ void Foam::pendularResidual::updateBoundaryCoeffs
                 // copy takes that value at the iterate (its update would
                 // look up pendularState's kappa, the start of the
                 // sub-step's)
-                bcInternal_[k][patchi] = scalarField(pf.size(), 1);
-                bcBoundary_[k][patchi] = scalarField(pf.size(), Zero);
-                bcDifference_[k][patchi] = scalarField(pf.size(), Zero);
+                cellValue(k, patchi, pf.size());
                 if (x)
                 {
                     const labelUList& cells = pf.patch().faceCells();
@@ -680,21 +688,6 @@ void Foam::pendularResidual::checkCoupledPatches(const fvMesh& mesh)
 }
 
 
-Foam::scalar Foam::pendularResidual::maxNonOrthogonality
-(
-    const fvMesh& mesh
-)
-{
-    return meshNonOrthogonality::New(mesh).maxDegrees();
-}
-
-
-bool Foam::pendularResidual::nonOrthogonalMesh(const fvMesh& mesh)
-{
-    return meshNonOrthogonality::New(mesh).corrected();
-}
-
-
 Foam::wordList Foam::pendularResidual::correctedFieldNames()
 {
     return wordList({"T", "p", "omegaW", "liquidPotential"});
@@ -706,7 +699,7 @@ Foam::word Foam::pendularResidual::unsupportedSnGradScheme
     const fvMesh& mesh
 )
 {
-    if (!nonOrthogonalMesh(mesh))
+    if (!meshNonOrthogonality::New(mesh).corrected())
     {
         return word::null;
     }
@@ -767,7 +760,8 @@ void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
         << "Keyword '" << (snGradDict.found(key) ? key : word("default"))
         << "' in " << snGradDict.name() << ": the snGrad scheme of "
         << name << " (" << snGradSchemeName(mesh, name) << ") on a"
-        << " non-orthogonal mesh (up to " << maxNonOrthogonality(mesh)
+        << " non-orthogonal mesh (up to "
+        << meshNonOrthogonality::New(mesh).maxDegrees()
         << " degrees) is not supported by pendularFoam's Newton engine,"
         << " whose face fluxes take the two-point gradient with the"
         << " non-orthogonal delta coefficients: valid schemes corrected,"
@@ -784,7 +778,8 @@ void Foam::pendularResidual::updateDeferred
 ) const
 {
     // The boundary conditions at x (collective), then the non-orthogonal
-    // corrections (the same on every rank: nonOrthogonalMesh is reduced)
+    // corrections (the same on every rank: meshNonOrthogonality::corrected
+    // is reduced)
     updateBoundaryCoeffs(&x);
     if (!nonOrthCorrected_)
     {
