@@ -16,12 +16,13 @@ import statistics
 import sys
 
 GOALS = {'ahcOff': 1.5, 'ahcOn': 3.0, 'ahcOnJacobian': 3.0,
-         'ahcOnReference': 3.0}
+         'ahcOnExactSolves': 3.0, 'ahcOnReference': 3.0}
 CASES = [
     ('laplacian', 'laplacianFoam', 'laplacianFoam (DT = k/rhoC)'),
     ('ahcOff', 'ahcFoam', 'ahcFoam, phase change off'),
     ('ahcOn', 'ahcFoam', 'ahcFoam, phase change on'),
     ('ahcOnJacobian', 'ahcFoam', 'ahcFoam, on, k Jacobian'),
+    ('ahcOnExactSolves', 'ahcFoam', 'ahcFoam, on, linearRelTol 0'),
     ('ahcOnReference', 'ahcFoam', 'ahcFoam REFERENCE, on'),
 ]
 

@@ -32,10 +32,7 @@ inline Foam::scalar Foam::porousMedium::matrixCapacity
     const label celli
 ) const
 {
-    const scalar phi = porosity()[celli];
-    return
-        (1.0 - phi)*rhoCpSolid_[celli]
-      + (phi - waterContent_[celli])*gas().rhoCp();
+    return matrixCapacity_[celli];
 }
 
 
@@ -139,6 +136,7 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
         )
     ),
     kappaUndried_(),
+    matrixCapacity_(),
     phaseChange_(nullptr)
 {
     // Unknown keywords: a misspelt one would be ignored or take a default
@@ -260,6 +258,15 @@ Foam::porousMedium::porousMedium(const fvMesh& mesh)
 
     // (-1 where the law is not defined at theta_0/phi, tabulated beyond its
     // table: kappaCell then calls the law, as before)
+    matrixCapacity_.setSize(mesh.nCells());
+    forAll(matrixCapacity_, celli)
+    {
+        const scalar phi = porosity()[celli];
+        matrixCapacity_[celli] =
+            (1.0 - phi)*rhoCpSolid_[celli]
+          + (phi - waterContent_[celli])*gas().rhoCp();
+    }
+
     kappaUndried_.setSize(mesh.nCells());
     forAll(kappaUndried_, celli)
     {
@@ -349,12 +356,22 @@ Foam::label Foam::porousMedium::temperature
 
     forAll(T, celli)
     {
-        const scalar minCapacity =
-            matrixCapacity(celli) + waterContent_[celli]*waterMinCapacity;
-
         scalar Ti = T[celli];
         scalar Hi, Ci;
         cellEnthalpy(celli, Ti, TMax[celli], Hi, Ci);
+
+        // Most cells: H(T) is already H to the tolerance below (at least
+        // 1e-12 |H|), as where the enthalpy is linear over the nonlinear
+        // iteration's change: T as given, without the bracket (the same
+        // values as the loop, which would not start)
+        if (mag(Hi - H[celli]) <= 1e-12*mag(H[celli]))
+        {
+            C[celli] = Ci;
+            continue;
+        }
+
+        const scalar minCapacity =
+            matrixCapacity(celli) + waterContent_[celli]*waterMinCapacity;
 
         // |T - root| <= |H(T) - H|/minCapacity brackets the root
         const scalar width = mag(Hi - H[celli])/minCapacity;

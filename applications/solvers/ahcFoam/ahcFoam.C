@@ -29,9 +29,16 @@ Description
         system/controlDict:  adjustTimeStep, maxDeltaT, maxDeltaTemperature,
                              minDeltaT, maxDeltaTGrowth
         system/fvSolution:   nonlinear { maxIter; residualTol; TTol;
-                             andersonDepth; extrapolate;
+                             andersonDepth; extrapolate; linearRelTol;
                              conductivityJacobian; balanceTolerance;
                              strictBalance; }
+    linearRelTol (default 0.01; 0 with conductivityJacobian): the linear
+    solve of an iteration may stop at this fraction of its initial residual
+    (inexact Newton, Dembo, Eisenstat & Steihaug 1982); an iteration that
+    converges on such a solve is solved again to the solver's tolerances
+    before it is accepted, so the energy balance is that of a full solve;
+    after a sub-step whose linearisation was exact, the next first solve is
+    full.
     conductivityJacobian (default false) adds Newton's derivative of the
     conduction fluxes with respect to k_e(T) to each iteration
     (conductivityJacobian.H): an asymmetric matrix, solved by PBiCGStab
