@@ -299,6 +299,31 @@ int Foam::cprPressureStage::apply(PC pc, Vec r, Vec z)
 }
 
 
+int Foam::cprPressureStage::view(PC pc, PetscViewer viewer)
+{
+    PetscFunctionBeginUser;
+    void* ctx;
+    PetscCall(PCShellGetContext(pc, &ctx));
+    const cprPressureStage& s = *static_cast<cprPressureStage*>(ctx);
+    PetscCall
+    (
+        PetscViewerASCIIPrintf
+        (
+            viewer, "pressure unknown %d of %d, decoupling %s\n",
+            int(s.field_), int(s.nBlock_),
+            decouplingTypeNames[s.decoupling_].c_str()
+        )
+    );
+    if (s.ksp_)
+    {
+        PetscCall(PetscViewerASCIIPushTab(viewer));
+        PetscCall(KSPView(s.ksp_, viewer));
+        PetscCall(PetscViewerASCIIPopTab(viewer));
+    }
+    PetscFunctionReturn(0);
+}
+
+
 // * * * * * * * * * * * * * * * Static Functions * * * * * * * * * * * * //
 
 bool Foam::cprPressureStage::available(const amgType amg, std::string& why)
@@ -352,6 +377,7 @@ void Foam::cprPressureStage::attach(PC pc)
     petscSession::check(PCShellSetContext(pc, this), "PCShellSetContext");
     petscSession::check(PCShellSetSetUp(pc, setUp), "PCShellSetSetUp");
     petscSession::check(PCShellSetApply(pc, apply), "PCShellSetApply");
+    petscSession::check(PCShellSetView(pc, view), "PCShellSetView");
     petscSession::check
     (
         PCShellSetName(pc, "CPR pressure stage (AMG on the decoupled p)"),
