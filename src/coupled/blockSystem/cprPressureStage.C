@@ -6,6 +6,7 @@
 #include "petscSession.H"
 #include <petscksp.h>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -22,7 +23,6 @@ const Foam::Enum<Foam::cprPressureStage::amgType>
 Foam::cprPressureStage::amgTypeNames
 ({
     { amgType::hypre, "hypre" },
-    { amgType::gamg, "gamg" },
     { amgType::ml, "ml" },
 });
 
@@ -250,7 +250,8 @@ int Foam::cprPressureStage::setUp(PC pc)
 
     PetscCall(KSPSetOperators(s.ksp_, s.Ap_, s.Ap_));
     PetscCall(KSPSetFromOptions(s.ksp_));
-    PetscCall(KSPSetUp(s.ksp_));
+    // (an AMG's error, e.g. a zero diagonal: a failed stage, see failed_)
+    s.failed_ = KSPSetUp(s.ksp_) != 0;
     PetscFunctionReturn(0);
 }
 
@@ -260,7 +261,7 @@ int Foam::cprPressureStage::apply(PC pc, Vec r, Vec z)
     PetscFunctionBeginUser;
     void* ctx;
     PetscCall(PCShellGetContext(pc, &ctx));
-    const cprPressureStage& s = *static_cast<cprPressureStage*>(ctx);
+    cprPressureStage& s = *static_cast<cprPressureStage*>(ctx);
     const label B = s.nBlock_;
     const label n = s.weights_.size()/B;
 
@@ -281,7 +282,11 @@ int Foam::cprPressureStage::apply(PC pc, Vec r, Vec z)
     PetscCall(VecRestoreArray(s.rp_, &pv));
     PetscCall(VecRestoreArrayRead(r, &rv));
 
-    PetscCall(KSPSolve(s.ksp_, s.rp_, s.yp_));
+    if (s.failed_ || KSPSolve(s.ksp_, s.rp_, s.yp_) != 0)
+    {
+        PetscCall(VecSet(z, std::numeric_limits<scalar>::quiet_NaN()));
+        PetscFunctionReturn(0);
+    }
 
     // Prolongation into the pressure unknowns
     PetscCall(VecSet(z, 0));
@@ -355,6 +360,7 @@ Foam::cprPressureStage::cprPressureStage
     decoupling_(decoupling),
     prefix_(prefix),
     weights_(),
+    failed_(false),
     Ap_(nullptr),
     ksp_(nullptr),
     rp_(nullptr),
@@ -393,6 +399,7 @@ void Foam::cprPressureStage::reset()
     if (yp_) VecDestroy(&yp_);
     if (Ap_) MatDestroy(&Ap_);
     weights_.clear();
+    failed_ = false;
 }
 
 
