@@ -111,8 +111,18 @@ Foam::label Foam::pendularNewton::solveCellWater
     // (Dahlquist and Bjorck, 2008, Numerical Methods in Scientific
     // Computing I, ch. 6)
     // A non-finite g (a closure out of its range): x unchanged, -1
+    // The gas density rho_g = rho_w + M_a p_a/(R T) decreases as W adds
+    // vapour (at fixed T, p_g): with p_a < 0 it crosses zero, where
+    // omega = rho_w/rho_g has a pole and g changes sign through it; a
+    // bracket across it would converge onto the pole, rho_g = 0 exactly
+    // and a division by zero (SIGFPE: tutorials/wetHearthCoupled's
+    // hearth_pendSat_1_1e-14 on 200 cells at t = 5220.80 s, T = 441 K,
+    // p_g = 2.86 bar below p_w = 7.54 bar). So every trial state's rho_g
+    // must be positive (the model's range; checked on the state's cache
+    // after the residual): else x unchanged, 0 (no local solve)
     scalar Rc[3];
     bool finite = true;
+    bool gasDense = true;
     auto g = [&](const scalar W)
     {
         x[3*c + 2] = W;
@@ -122,6 +132,7 @@ Foam::label Foam::pendularNewton::solveCellWater
             Rc[0] = std::numeric_limits<scalar>::quiet_NaN();
         }
         finite = finite && std::isfinite(Rc[0]);
+        gasDense = gasDense && res.state(c, &x[3*c]).rhoG > 0;
         return Rc[0];
     };
     const scalar W0 = x[3*c + 2];
@@ -130,7 +141,7 @@ Foam::label Foam::pendularNewton::solveCellWater
     {
         return -1;
     }
-    if (mag(g0) < tol)
+    if (mag(g0) < tol || !gasDense)
     {
         return 0;
     }
@@ -153,7 +164,7 @@ Foam::label Foam::pendularNewton::solveCellWater
         x[3*c + 2] = W0;
         return -1;
     }
-    if (!(ga < 0 && gb > 0))
+    if (!(ga < 0 && gb > 0) || !gasDense)
     {
         x[3*c + 2] = W0;
         return 0;
