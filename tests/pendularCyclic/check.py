@@ -7,7 +7,8 @@ run's distance to its discrete solution is within its tolerances, the two
 discrete solutions are the same by the sine's mirror symmetry about L/4
 and 3L/4); the strip between walls at 0 and L (no cyclic pair) at least
 1e3 TTol away from the periodic strip's T (the pair carries flux); the
-half and walled runs' balances within 1e-10."""
+half and walled runs' balances within 1e-10. A fourth argument, with
+liquid flow (3L): the periodic run without it, whose W must differ."""
 import os
 import sys
 
@@ -16,6 +17,9 @@ from hearthcheck import read_internal_field
 from hearthTutorial import time_dirs
 
 periodic, half, walls = sys.argv[1:4]
+# with liquid flow (3L): the periodic run without it, whose W the liquid's
+# capillary flux must have moved (1e-3 of max W at least: 0.24 measured)
+dry = sys.argv[4] if len(sys.argv) > 4 else None
 c = hc.Check('pendularCyclic mirror')
 last = {d: time_dirs(d)[-1] for d in (periodic, half, walls)}
 c.true('the same latest time',
@@ -33,6 +37,12 @@ b = read_internal_field(os.path.join(last[walls], 'T'))
 dWalls = max(abs(x - y) for x, y in zip(a, b))
 c.true('T: max |periodic - walled strip| >= 1e-6 K (the pair carries flux)',
        dWalls >= 1e-6, '%.4g K' % dWalls)
+if dry:
+    a = read_internal_field(os.path.join(last[periodic], 'W'))
+    b = read_internal_field(os.path.join(time_dirs(dry)[-1], 'W'))
+    dW = max(abs(x - y) for x, y in zip(a, b))/max(abs(x) for x in a)
+    c.true('W: max |with - without liquid flow|/max W >= 1e-3',
+           dW >= 1e-3, '%.4g' % dW)
 for d in (half, walls):
     c.le('%s: worst relative imbalance' % os.path.basename(d),
          hc.worst_relative_imbalance(os.path.join(d, 'log.pendularFoam')),
