@@ -6,6 +6,7 @@
 #include "meshNonOrthogonality.H"
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
+#include "cyclicFvPatch.H"
 #include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
 #include "waterModel.H"
@@ -78,11 +79,20 @@ Foam::pendularResidual::pendularResidual
     liquidBoundaryCell_(),
     liquidOnlyScales_(xScale()),
     nonOrthCorrected_(meshNonOrthogonality::New(fvMesh_).corrected()),
-    snGradCorr_()
+    snGradCorr_(),
+    deltaCoeffs_()
 {
+    forAll(deltaCoeffs_, k)
+    {
+        deltaCoeffs_[k] =
+            twoPointDeltaCoeffs(fvMesh_, correctedFieldNames()[k]);
+        if (!deltaCoeffs_[k])
+        {
+            checkSnGradSchemes(fvMesh_);
+        }
+    }
     if (nonOrthCorrected_)
     {
-        checkSnGradSchemes(fvMesh_);
         snGradCorr_.setSize(nCorrected*fvMesh_.nFaces(), Zero);
     }
 
@@ -108,8 +118,8 @@ Foam::pendularResidual::pendularResidual
         }
     }
 
-    // The patch kinds of pendularFoam (pendularState); other coupled
-    // patches than processor ones are refused
+    // The patch kinds of pendularFoam (pendularState); AMI patches are
+    // refused
     kind_ = pendularState::patchKinds(p_, pw_);
     forAll(surfaceBalance_, patchi)
     {
@@ -149,8 +159,8 @@ Foam::pendularResidual::pendularResidual
     }
     updateBoundaryCoeffs(nullptr);
 
-    // The porosity and guess of the cells across processor patches
-    // (collective)
+    // The porosity and guess of the cells across processor and cyclic
+    // patches (collective)
     syncTools::swapBoundaryCellList
     (
         fvMesh_, medium_.porosity().primitiveField(), nbrPorosity_
@@ -659,7 +669,11 @@ void Foam::pendularResidual::transferBoundaryValues
 
 bool Foam::pendularResidual::followsCondition(const fvPatch& patch)
 {
-    return !patch.coupled() || isA<processorFvPatch>(patch);
+    // (processorCyclic is a processor patch)
+    return
+        !patch.coupled()
+     || isA<processorFvPatch>(patch)
+     || isA<cyclicFvPatch>(patch);
 }
 
 
@@ -678,12 +692,12 @@ void Foam::pendularResidual::checkCoupledPatches(const fvMesh& mesh)
         )
             << "Patch '" << patch.name() << "' of type '" << patch.type()
             << "' in " << mesh.boundaryMesh().objectPath() << ": the"
-            << " Newton engine (nonlinear { engine newton; }) couples cells"
-            << " across processor patches only; valid patch types with"
+            << " Newton engine (nonlinear { engine newton; }, the default)"
+            << " couples a face to one face only; valid patch types with"
             << " engine newton: patch, wall, symmetryPlane, symmetry, wedge,"
-            << " empty, processor (or nonlinear { engine segregated; },"
-            << " the default with a " << patch.type() << " patch)"
-            << exit(FatalIOError);
+            << " empty, cyclic, processor, processorCyclic (or nonlinear {"
+            << " engine segregated; } in " << mesh.solutionDict().name()
+            << ")" << exit(FatalIOError);
     }
 }
 
@@ -694,17 +708,15 @@ Foam::wordList Foam::pendularResidual::correctedFieldNames()
 }
 
 
-Foam::word Foam::pendularResidual::unsupportedSnGradScheme
+const Foam::surfaceScalarField*
+Foam::pendularResidual::twoPointDeltaCoeffs
 (
-    const fvMesh& mesh
+    const fvMesh& mesh,
+    const word& field
 )
 {
-    if (!meshNonOrthogonality::New(mesh).corrected())
-    {
-        return word::null;
-    }
-    // A field to ask the schemes their delta coefficients with (they do
-    // not depend on its values)
+    // A field to ask the scheme its delta coefficients with (they do not
+    // depend on its values)
     const volScalarField probe
     (
         IOobject
@@ -715,19 +727,16 @@ Foam::word Foam::pendularResidual::unsupportedSnGradScheme
         mesh,
         dimensionedScalar(dimless, Zero)
     );
-    for (const word& name : correctedFieldNames())
-    {
-        const tmp<fv::snGradScheme<scalar>> scheme =
-            fv::snGradScheme<scalar>::New
-            (
-                mesh, mesh.snGradScheme("snGrad(" + name + ')')
-            );
-        if (&scheme().deltaCoeffs(probe)() != &mesh.nonOrthDeltaCoeffs())
-        {
-            return name;
-        }
-    }
-    return word::null;
+    const tmp<fv::snGradScheme<scalar>> scheme =
+        fv::snGradScheme<scalar>::New
+        (
+            mesh, mesh.snGradScheme("snGrad(" + field + ')')
+        );
+    const surfaceScalarField* dc = &scheme().deltaCoeffs(probe)();
+    return
+        dc == &mesh.nonOrthDeltaCoeffs() || dc == &mesh.deltaCoeffs()
+      ? dc
+      : nullptr;
 }
 
 
@@ -748,26 +757,27 @@ Foam::word Foam::pendularResidual::snGradSchemeName
 
 void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
 {
-    const word name = unsupportedSnGradScheme(mesh);
-    if (name.empty())
+    for (const word& name : correctedFieldNames())
     {
-        return;
+        if (twoPointDeltaCoeffs(mesh, name))
+        {
+            continue;
+        }
+        const dictionary& snGradDict =
+            mesh.schemesDict().subDict("snGradSchemes");
+        const word key = "snGrad(" + name + ')';
+        FatalIOErrorInFunction(snGradDict)
+            << "Keyword '" << (snGradDict.found(key) ? key : word("default"))
+            << "' in " << snGradDict.name() << ": the snGrad scheme of "
+            << name << " (" << snGradSchemeName(mesh, name) << ") is not"
+            << " supported by pendularFoam's Newton engine, whose face"
+            << " fluxes take the two-point gradient with the mesh's delta"
+            << " coefficients: valid schemes corrected, uncorrected,"
+            << " limited, faceCorrected, orthogonal, CentredFit,"
+            << " linearFit, quadraticFit (or nonlinear { engine"
+            << " segregated; })"
+            << exit(FatalIOError);
     }
-    const dictionary& snGradDict =
-        mesh.schemesDict().subDict("snGradSchemes");
-    const word key = "snGrad(" + name + ')';
-    FatalIOErrorInFunction(snGradDict)
-        << "Keyword '" << (snGradDict.found(key) ? key : word("default"))
-        << "' in " << snGradDict.name() << ": the snGrad scheme of "
-        << name << " (" << snGradSchemeName(mesh, name) << ") on a"
-        << " non-orthogonal mesh (up to "
-        << meshNonOrthogonality::New(mesh).maxDegrees()
-        << " degrees) is not supported by pendularFoam's Newton engine,"
-        << " whose face fluxes take the two-point gradient with the"
-        << " non-orthogonal delta coefficients: valid schemes corrected,"
-        << " uncorrected, limited, faceCorrected (or nonlinear { engine"
-        << " segregated; })"
-        << exit(FatalIOError);
 }
 
 
@@ -1099,7 +1109,7 @@ void Foam::pendularResidual::flux
     const cellState& n,
     const scalar magSf,
     const scalar w,
-    const scalar dc,
+    const scalar* dc,
     const scalar* corr,
     scalar* F
 ) const
@@ -1109,26 +1119,27 @@ void Foam::pendularResidual::flux
     // values (owner where the flux is >= 0)
     // With liquidFlow, times k_rg of the face (liquidFlow::krgFace: as
     // k_rl, upwind of the gas pressure difference by default)
-    // The snGrad of each field dc (phi_n - phi_o) + c, c its non-orthogonal
-    // correction, written dc (phi_n - phi_o + c/dc): without a correction
-    // the values of the two-point fluxes, bit for bit
-    const scalar dT = n.T - o.T + (corr ? corr[0]/dc : 0);
-    const scalar dp = n.p - o.p + (corr ? corr[1]/dc : 0);
-    const scalar dOmega = n.omega - o.omega + (corr ? corr[2]/dc : 0);
+    // The snGrad of each field dc (phi_n - phi_o) + c, dc its scheme's
+    // delta coefficient, c its non-orthogonal correction, written
+    // dc (phi_n - phi_o + c/dc): without a correction the values of the
+    // two-point fluxes, bit for bit
+    const scalar dT = n.T - o.T + (corr ? corr[0]/dc[0] : 0);
+    const scalar dp = n.p - o.p + (corr ? corr[1]/dc[1] : 0);
+    const scalar dOmega = n.omega - o.omega + (corr ? corr[2]/dc[2] : 0);
     const liquidFlow* liquid = medium_.liquidFlowPtr();
     const scalar KgByMu =
         (w*o.Kg + (1 - w)*n.Kg)/medium_.gasViscosity()
        *(liquid ? liquid->krgFace(o.alpha, n.alpha, dp, w) : 1);
-    const scalar q = -KgByMu*dp*dc*magSf;
+    const scalar q = -KgByMu*dp*dc[1]*magSf;
     const scalar j =
         -pendularState::faceValue(o.Dv, n.Dv, w)*(w*o.rhoG + (1 - w)*n.rhoG)
-        *dOmega*dc*magSf;
+        *dOmega*dc[2]*magSf;
     const scalar Fw = (q >= 0 ? o.rhoW : n.rhoW)*q + j;
     const scalar Fa = (q >= 0 ? o.rhoA : n.rhoA)*q - j;
     F[0] = Fw;
     F[1] = Fa;
     F[2] =
-        -(w*o.kappa + (1 - w)*n.kappa)*dT*dc*magSf
+        -(w*o.kappa + (1 - w)*n.kappa)*dT*dc[0]*magSf
       + Fa*(Fa >= 0 ? o.hA : n.hA)
       + Fw*(Fw >= 0 ? o.hW : n.hW);
 }
@@ -1205,17 +1216,22 @@ void Foam::pendularResidual::faceFlux
     if (facei < fvMesh_.nInternalFaces())
     {
         const cellState& n = state(fvMesh_.faceNeighbour()[facei], xNei);
+        const scalar dc[3] =
+        {
+            (*deltaCoeffs_[0])[facei],
+            (*deltaCoeffs_[1])[facei],
+            (*deltaCoeffs_[2])[facei]
+        };
         flux
         (
-            o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei],
-            fvMesh_.nonOrthDeltaCoeffs()[facei],
+            o, n, fvMesh_.magSf()[facei], fvMesh_.weights()[facei], dc,
             snGradCorrections(facei), F
         );
         addLiquidFlux(facei, o, n, F);
         return;
     }
 
-    // A face of a processor patch: the cell across at xNei
+    // A face of a processor or cyclic patch: the cell across at xNei
     label patchi, i;
     patchFace(facei, patchi, i);
     const label bFacei = facei - fvMesh_.nInternalFaces();
@@ -1225,11 +1241,16 @@ void Foam::pendularResidual::faceFlux
             nbrPorosity_[bFacei], nbrAlphaOld_[bFacei], xNei,
             medium_.saturationValues(xNei[0]), nbrPhase_[bFacei]
         );
+    const scalar dc[3] =
+    {
+        deltaCoeffs_[0]->boundaryField()[patchi][i],
+        deltaCoeffs_[1]->boundaryField()[patchi][i],
+        deltaCoeffs_[2]->boundaryField()[patchi][i]
+    };
     flux
     (
         o, n, fvMesh_.magSf().boundaryField()[patchi][i],
-        fvMesh_.weights().boundaryField()[patchi][i],
-        fvMesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
+        fvMesh_.weights().boundaryField()[patchi][i], dc,
         snGradCorrections(facei), F
     );
     addLiquidFlux(facei, o, n, F);
@@ -1468,7 +1489,8 @@ void Foam::pendularResidual::addLiquidFlux
             facei,
             liquidState(o),
             liquidState(n),
-            corr ? corr[3] : 0
+            corr ? corr[3] : 0,
+            deltaCoeffs_[3]
         );
     F[0] += Fl;
     F[2] += Fl*medium_.liquidEnthalpy(Fl >= 0 ? o.T : n.T);

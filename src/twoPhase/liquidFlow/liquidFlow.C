@@ -5,7 +5,6 @@
 #include "liquidFlow.H"
 #include "checkedRead.H"
 #include "emptyPolyPatch.H"
-#include "processorPolyPatch.H"
 #include "uniformDimensionedFields.H"
 #include "volFields.H"
 #include "surfaceFields.H"
@@ -203,16 +202,12 @@ void Foam::liquidFlow::readBoundary
     forAll(pbm, patchi)
     {
         const polyPatch& pp = pbm[patchi];
-        if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp))
+        // (the liquid crosses processor and cyclic patches as internal
+        // faces: no condition; AMI patches are refused by the Newton
+        // engine, pendularResidual::checkCoupledPatches)
+        if (isA<emptyPolyPatch>(pp) || pp.coupled())
         {
             continue;
-        }
-        if (pp.coupled())
-        {
-            FatalIOErrorInFunction(bDict)
-                << "Patch '" << pp.name() << "' of type " << pp.type()
-                << ": coupled patches other than processor are not"
-                << " supported" << exit(FatalIOError);
         }
         names.append(pp.name());
         if (!bDict.isDict(pp.name()))
@@ -369,9 +364,12 @@ Foam::scalar Foam::liquidFlow::faceFlux
     const label facei,
     const liquidDarcyFlux::liquidState& o,
     const liquidDarcyFlux::liquidState& n,
-    const scalar snGradCorrection
+    const scalar snGradCorrection,
+    const surfaceScalarField* deltaCoeffs
 ) const
 {
+    const surfaceScalarField& dc =
+        deltaCoeffs ? *deltaCoeffs : mesh_.nonOrthDeltaCoeffs();
     if (facei < mesh_.nInternalFaces())
     {
         const vectorField& C = mesh_.C();
@@ -381,12 +379,14 @@ Foam::scalar Foam::liquidFlow::faceFlux
                 o, n,
                 C[mesh_.faceNeighbour()[facei]] - C[mesh_.faceOwner()[facei]],
                 mesh_.magSf()[facei],
-                mesh_.nonOrthDeltaCoeffs()[facei],
+                dc[facei],
                 mesh_.weights()[facei],
                 snGradCorrection
             );
     }
-    // A face of a processor patch: the internal face seen from this side
+    // A face of a processor or cyclic patch: the internal face seen from
+    // this side (delta_: the patch's delta, a cyclic's through its
+    // transform)
     const label bFacei = facei - mesh_.nInternalFaces();
     const label patchi = mesh_.boundaryMesh().patchID()[bFacei];
     const label i = facei - mesh_.boundaryMesh()[patchi].start();
@@ -395,7 +395,7 @@ Foam::scalar Foam::liquidFlow::faceFlux
         (
             o, n, delta_[bFacei],
             mesh_.magSf().boundaryField()[patchi][i],
-            mesh_.nonOrthDeltaCoeffs().boundaryField()[patchi][i],
+            dc.boundaryField()[patchi][i],
             mesh_.weights().boundaryField()[patchi][i],
             snGradCorrection
         );

@@ -50,6 +50,7 @@ Description
 #include "pendularResidual.H"
 #include "liquidFlow.H"
 #include "emptyFvPatch.H"
+#include "cyclicFvPatch.H"
 #include "unitChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -198,9 +199,10 @@ FixedList<scalar, 3> scaledResiduals
 }
 
 //- Calls visit(o, n, patchi, i, F) with the fluxes F[3] the residual gives
-//  at x (its deferred terms evaluated at x) on every internal face i (o, n its cells, patchi -1) and on every
-//  face of a patch neither coupled nor empty (o its cell, n -1, i its index
-//  in patch patchi): serial
+//  at x (its deferred terms evaluated at x) on every internal face i (o,
+//  n its cells, patchi -1) and on every face of a patch that is not empty
+//  (o its cell, n -1, i its index in patch patchi; a cyclic face from
+//  each side, with the state across: serial)
 template<class Visitor>
 void forEachFaceFlux
 (
@@ -223,17 +225,27 @@ void forEachFaceFlux
         res.faceFlux(f, &x[3*o], &x[3*n], F);
         visit(o, n, label(-1), f, F);
     }
+    const scalarField xNbr(res.neighbourStates(x));
     forAll(mesh.boundary(), patchi)
     {
         const fvPatch& patch = mesh.boundary()[patchi];
-        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        if (isA<emptyFvPatch>(patch))
         {
             continue;
         }
         forAll(patch, i)
         {
             const label c = patch.faceCells()[i];
-            res.boundaryFlux(patch.start() + i, &x[3*c], F);
+            const label facei = patch.start() + i;
+            if (patch.coupled())
+            {
+                const label b = facei - mesh.nInternalFaces();
+                res.faceFlux(facei, &x[3*c], &xNbr[3*b], F);
+            }
+            else
+            {
+                res.boundaryFlux(facei, &x[3*c], F);
+            }
             visit(c, label(-1), label(patchi), label(i), F);
         }
     }
@@ -459,6 +471,11 @@ int main(int argc, char *argv[])
         "the case's soil is of model B (waterModel nonEquilibrium) and"
         " pendularFoam's step segregated: 1-3 with the liquid fraction"
         " relaxed from the old one (1m)"
+    );
+    argList::addBoolOption
+    (
+        "pressureRamp",
+        "2: the Jacobian at p_g raised 20 Pa per cell index (as -modelB)"
     );
     argList::addBoolOption
     (
@@ -1209,6 +1226,70 @@ int main(int argc, char *argv[])
             );
         }
 
+        // 1e. A cyclic pair (the case's front and back, tests/
+        // pendularResidual 2C): the flux of each face seen from its two
+        // sides, F(own, across) + F(across, own), 0 to round-off
+        // (conservative: 1e-12 of the largest |F| allowed, 2.7e-17
+        // measured), and the faces carry flux (the check would pass on a
+        // pair at rest): their largest |F_w| at least 1e-3 of the
+        // internal faces' (0.49 measured)
+        label nCyclicFaces = 0;
+        scalar cyclicErr = 0, cyclicMax = 0, internalMax = 0;
+        {
+            const scalarField xNbr(res.neighbourStates(xs));
+            scalar F[3], G[3];
+            for (label f = 0; f < mesh.nInternalFaces(); ++f)
+            {
+                const label o = mesh.faceOwner()[f];
+                const label n = mesh.faceNeighbour()[f];
+                res.faceFlux(f, &xs[3*o], &xs[3*n], F);
+                internalMax = max(internalMax, mag(F[0]));
+            }
+            forAll(mesh.boundary(), patchi)
+            {
+                const cyclicFvPatch* cp =
+                    isA<cyclicFvPatch>(mesh.boundary()[patchi]);
+                if (!cp)
+                {
+                    continue;
+                }
+                const cyclicFvPatch& nbr = cp->neighbFvPatch();
+                forAll(*cp, i)
+                {
+                    const label c = cp->faceCells()[i];
+                    const label cn = nbr.faceCells()[i];
+                    const label b = cp->start() + i - mesh.nInternalFaces();
+                    const label bn = nbr.start() + i - mesh.nInternalFaces();
+                    res.faceFlux(cp->start() + i, &xs[3*c], &xNbr[3*b], F);
+                    res.faceFlux(nbr.start() + i, &xs[3*cn], &xNbr[3*bn], G);
+                    for (label k = 0; k < 3; ++k)
+                    {
+                        cyclicErr =
+                            max
+                            (
+                                cyclicErr,
+                                mag(F[k] + G[k])/max(scale[k], VSMALL)
+                            );
+                    }
+                    cyclicMax = max(cyclicMax, mag(F[0]));
+                    ++nCyclicFaces;
+                }
+            }
+        }
+        if (nCyclicFaces)
+        {
+            checkAbs
+            (
+                "cyclic faces: max |F(o, n) + F(n, o)|/max |F|",
+                cyclicErr, 0, 1e-12
+            );
+            checkAtLeast
+            (
+                "cyclic faces: max |F_w|/max |F_w| of internal faces",
+                cyclicMax/max(internalMax, VSMALL), 1e-3, 0
+            );
+        }
+
         // 1d. The effective vapour diffusivity of the faces (st.Dvf(),
         // pendularState::faceValue, which the residual's fluxes take too:
         // 1c) against the two half-cells' resistances in series computed
@@ -1301,9 +1382,14 @@ int main(int argc, char *argv[])
     // differently (measured: 2e-5 to 2e-3 of a column at relaxation
     // factors 30 to 1e6, the derivative of the 10-11 face's energy flux
     // jumping between steps of 1e-3 and 6e-3 Pa while the states are
-    // linear in p_g)
+    // linear in p_g). The same with -pressureRamp (2C, the cyclic pair:
+    // at the step's own state the entries of the energy against p_g
+    // between cells 1 and 13, which the cyclic pair joins besides their
+    // internal face, missed by 5.9e-6 of the column, the kink; 2.2e-7
+    // with the ramp, measured)
     scalarField xJ(x);
-    if (modelB)
+    const bool pressureRamp = modelB || args.found("pressureRamp");
+    if (pressureRamp)
     {
         forAll(T, c)
         {
@@ -1355,7 +1441,7 @@ int main(int argc, char *argv[])
         jacobianCheck
         (
             mesh, res, xJ,
-            modelB ? "wet and drying cells, p_g + 20 Pa per cell index"
+            pressureRamp ? "wet and drying cells, p_g + 20 Pa per cell index"
           : "wet and drying cells"
         );
     }
