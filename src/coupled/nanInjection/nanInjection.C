@@ -11,43 +11,26 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-int Foam::nanInjection::pendularNewtonResidual
-(
-    Foam::debug::optimisationSwitch("pendularNewtonNaN", 0)
-);
-registerOptSwitch
-(
-    "pendularNewtonNaN",
-    int,
-    Foam::nanInjection::pendularNewtonResidual
-);
+// A test switch: its int, from the OptimisationSwitches (0 by default),
+// registered, so that a case's controlDict or -opt-switch sets it (each
+// on a line of its own: registerOptSwitch names its object by the line)
+#define testSwitch(var, name)                                                 \
+    int Foam::nanInjection::var(Foam::debug::optimisationSwitch(name, 0));    \
+    registerOptSwitch(name, int, Foam::nanInjection::var)
 
-int Foam::nanInjection::pendularNewtonLocalWater
-(
-    Foam::debug::optimisationSwitch("pendularNewtonLocalWaterNaN", 0)
-);
-registerOptSwitch
-(
-    "pendularNewtonLocalWaterNaN",
-    int,
-    Foam::nanInjection::pendularNewtonLocalWater
-);
+testSwitch(pendularNewtonResidual, "pendularNewtonNaN");
+testSwitch(pendularNewtonLocalWater, "pendularNewtonLocalWaterNaN");
+testSwitch(richardsNewtonResidual, "richardsNewtonNaN");
+// (not a NaN: pendularNewton's projection onto non-negative air off)
+testSwitch(pendularNewtonNoAirProjection, "pendularNewtonNoAirProjection");
 
-int Foam::nanInjection::richardsNewtonResidual
-(
-    Foam::debug::optimisationSwitch("richardsNewtonNaN", 0)
-);
-registerOptSwitch
-(
-    "richardsNewtonNaN",
-    int,
-    Foam::nanInjection::richardsNewtonResidual
-);
+#undef testSwitch
 
 
 const Foam::wordList Foam::nanInjection::names
 ({
-    "pendularNewtonNaN", "pendularNewtonLocalWaterNaN", "richardsNewtonNaN"
+    "pendularNewtonNaN", "pendularNewtonLocalWaterNaN", "richardsNewtonNaN",
+    "pendularNewtonNoAirProjection"
 });
 
 
@@ -94,7 +77,7 @@ void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
             FatalIOErrorInFunction(*optPtr)
                 << "Unknown OptimisationSwitch '" << key << "' in "
                 << controlDict.name() << " (OpenFOAM would ignore it): the"
-                << " NaN injection switches are " << names
+                << " test switches are " << names
                 << " (case-sensitive)" << exit(FatalIOError);
         }
     }

@@ -684,7 +684,13 @@ Foam::pendularState::cellState Foam::pendularState::closure
     s.pa = p - s.pw;
     s.rhoA = medium.Ma()*s.pa/(R*T);
     s.rhoG = s.rhoW + s.rhoA;
-    s.omega = s.rhoW/s.rhoG;
+    // (rho_g = 0 exactly, the pole: omega 0, not a division by zero, which
+    // traps under FOAM_SIGFPE; a state with rho_g <= 0 is outside the
+    // model's range: pendularNewton::valid refuses such an iterate and
+    // solveCellWater such a trial water, whose residuals are then not
+    // used; a regula falsi converged onto it, the SIGFPE of 2026-12-04 in
+    // tutorials/wetHearthCoupled/README.md)
+    s.omega = s.rhoG != 0 ? s.rhoW/s.rhoG : 0;
     s.Kg = medium.Kg(alpha, phi);
     s.Dv = medium.vapourDiffusivity(alpha, phi);
     s.kappa = medium.kappa(alpha, phi);
