@@ -2,7 +2,7 @@
 timeScheme BDF2 (localErrorTol 1): BDF2's order reduction
 (variableStepBdf2) retook the sub-steps whose BDF2 solve failed by
 backward Euler (at least one 'step retried' line: the case exercises
-it; measured 2026-12-04: 5 in 37 steps, 201 Newton iterations, against
+it; measured 2026-12-04: 9 in 37 steps, 221 Newton iterations, against
 998 and 11 rejected sub-steps before it), no sub-step was rejected for
 unconverged nonlinear iterations, and the water, air and energy
 balances, with the BDF2 term, close to 1e-10 relative
