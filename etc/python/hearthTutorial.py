@@ -264,7 +264,8 @@ def wedge_to_full(blockMeshDict='system/blockMeshDict'):
 def pendular_balances(log):
     """Every write's balances of a pendularFoam log -> list of dicts:
     time, and for each of 'water' [kg], 'air' [kg], 'energy' [J] a dict
-    out_<patch>, inDomain, stored, out, imbalance, relative; nOutside (cells
+    out_<patch>, inDomain, stored, bdf2 (the BDF2 term C^N of the stored
+    change, with timeScheme BDF2 only), out, imbalance, relative; nOutside (cells
     above the pendular range), alphaLMin, alphaLMax."""
     with open(log) as f:
         text = f.read()
@@ -288,6 +289,7 @@ def pendular_balances(log):
                 d['out_' + k] = float(v)
             for key, pat in (('inDomain', r'in the domain\s+= (\S+)'),
                              ('stored', r'stored change\s+= (\S+)'),
+                             ('bdf2', r'of which BDF2 term\s+= (\S+)'),
                              ('out', r'out \(all patches\)\s+= (\S+)'),
                              ('imbalance', r'imbalance\s+= (\S+)'),
                              ('relative', r'\(relative (\S+?)\)')):

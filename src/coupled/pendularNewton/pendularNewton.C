@@ -957,7 +957,8 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 (
     pendularResidual& res,
     scalarField& x,
-    const scalar pRef
+    const scalar pRef,
+    const bool limitChopRuns
 )
 {
     result out;
@@ -980,6 +981,9 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     scalarField dx(x.size());
     label nChopped = 0;
     label nProjected = 0;
+    // Consecutive iterations whose update chopped the water of a cell
+    // (limitChopRuns)
+    label chopRun = 0;
     const pendularMedium& medium = res.medium();
     const scalarField& phi = medium.porosity().primitiveField();
 
@@ -1488,6 +1492,27 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
         reduce(nProjected, sumOp<label>());
         uPrev = out.update;
         out.update = u;
+
+        // Chopped at every iteration (limitChopRuns): the water balance
+        // of those cells has no root W >= 0 within reach (nChopped is
+        // reduced: every rank returns together)
+        chopRun = nChopped > 0 ? chopRun + 1 : 0;
+        if (limitChopRuns && chopRun >= maxChopRun_)
+        {
+            out.failure =
+                "the water of " + Foam::name(nChopped) + " cell(s) chopped"
+                " (an update below dryingFactor of its value) in "
+              + Foam::name(chopRun) + " consecutive Newton iterations: no"
+                " root W >= 0 of their water balance in reach";
+            out.iterations = iter + 1;
+            out.valid = valid(res, x, pRef);
+            if (verbose_)
+            {
+                Info<< "    Newton " << iter << ": " << out.failure.c_str()
+                    << endl;
+            }
+            return out;
+        }
 
         // The water of the cells at the kink or near it (the drying
         // front) from their own water balances

@@ -154,6 +154,19 @@ bool Foam::subStepController::reject(const label iter, const string& reason)
 }
 
 
+void Foam::subStepController::retry
+(
+    const label iter,
+    const string& reason,
+    const string& how
+)
+{
+    totalIter_ += iter;
+    Info<< "    step retried after " << iter << " iterations ("
+        << reason.c_str() << "): " << how.c_str() << endl;
+}
+
+
 void Foam::subStepController::end()
 {
     lastMaxChange_ =

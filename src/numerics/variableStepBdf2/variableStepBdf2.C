@@ -24,6 +24,7 @@ Foam::variableStepBdf2::variableStepBdf2
     dt1_(0),
     dt2_(0),
     nAccepted_(0),
+    nReduced_(0),
     x1_(),
     x2_(),
     total_(totals),
@@ -50,7 +51,7 @@ Foam::scalar Foam::variableStepBdf2::omega(const scalar dt) const
 Foam::variableStepBdf2::coefficients
 Foam::variableStepBdf2::coeffs(const scalar dt) const
 {
-    const scalar w = omega(dt);
+    const scalar w = order() == 2 ? omega(dt) : 0;
     return coefficients{(1 + 2*w)/(1 + w), 1 + w, sqr(w)/(1 + w)};
 }
 
@@ -59,9 +60,27 @@ Foam::scalar Foam::variableStepBdf2::error
 (
     const scalarField& x,
     const scalarField& xn,
-    const scalar dt
+    const scalar dt,
+    const label order
 ) const
 {
+    if (order == 1)
+    {
+        if (nAccepted_ < 1)
+        {
+            return -1;
+        }
+        // |le| = h^2/2 |x''|, x'' = 2 f[t_n+1, t_n, t_n-1]
+        const scalar h = dt, k1 = dt1_;
+        scalar err = 0;
+        for (label i = component_; i < x.size(); i += nBlock_)
+        {
+            const scalar f01 = (x[i] - xn[i])/h;
+            const scalar f12 = (xn[i] - x1_[i])/k1;
+            err = max(err, sqr(h)*mag((f01 - f12)/(h + k1)));
+        }
+        return returnReduce(err, maxOp<scalar>());
+    }
     if (nAccepted_ < 2)
     {
         return -1;
@@ -108,7 +127,7 @@ void Foam::variableStepBdf2::accept
 )
 {
     // The balance correction c_n of this step (0 for backward Euler)
-    const scalar w = omega(dt);
+    const scalar w = order() == 2 ? omega(dt) : 0;
     forAll(total_, k)
     {
         const scalar dM = totals[k] - total_[k];
@@ -124,6 +143,7 @@ void Foam::variableStepBdf2::accept
     dt2_ = dt1_;
     dt1_ = dt;
     nAccepted_ = min(nAccepted_ + 1, 2);
+    nReduced_ = max(nReduced_ - 1, 0);
 }
 
 
