@@ -172,6 +172,12 @@ int Foam::cprPressureStage::setUp(PC pc)
     cprPressureStage& s = *static_cast<cprPressureStage*>(ctx);
     Mat A;
     PetscCall(PCGetOperators(pc, nullptr, &A));
+    if (s.marked_ && s.Ap_ && !s.rebuild_ && !s.failed_)
+    {
+        // The hierarchy, weights and A_p of the sub-step's first set-up
+        PetscFunctionReturn(0);
+    }
+    s.rebuild_ = false;
     if (!s.Ap_)
     {
         s.createMatrix(A);
@@ -361,6 +367,8 @@ Foam::cprPressureStage::cprPressureStage
     prefix_(prefix),
     weights_(),
     failed_(false),
+    rebuild_(true),
+    marked_(false),
     Ap_(nullptr),
     ksp_(nullptr),
     rp_(nullptr),
@@ -400,6 +408,7 @@ void Foam::cprPressureStage::reset()
     if (Ap_) MatDestroy(&Ap_);
     weights_.clear();
     failed_ = false;
+    rebuild_ = true;
 }
 
 
