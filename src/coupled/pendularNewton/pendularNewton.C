@@ -552,22 +552,12 @@ Foam::label Foam::pendularNewton::airProjection
     }
     if (res.medium().saturatedZone())
     {
-        // Not with saturatedZone (issue 14, measured 2026-12-04). There the
-        // cells with p_a < 0 in Newton's iterates are boiling cells whose
-        // gas is nearly pure vapour (tests/pendularSaturatedDrying's
-        // step1_20: only its top cell, at 373-375 K under the open top,
-        // p_a -0.01 to -216 Pa, p_w 102-108 kPa; in the sub-steps later
-        // rejected also cells at alpha_l = 1, p_a down to -3.3 kPa), and
-        // the accepted roots had p_a >= 0 without a projection in every
-        // run measured (airLost now refuses any other). Projected (the
-        // cells with S_l < 1; with every two-phase cell the same counts
-        // there): the results move within the mesh errors and the
-        // rejected sub-steps follow the sub-step sequence, not a trend:
-        // tutorials/wetHearthCoupled's four saturated-zone runs 337 ->
-        // 153 rejected on 200 cells (103 -> 29 on 100), but step1_20 13
-        // -> 30 (its budget 22 + 30 %), where the code without the
-        // projection gives 22, 25, 30 at maxDeltaTemperature 0.98, 0.99,
-        // 1.01 K instead of 1 K (with it 26, 18, 30): off, as before
+        // Not with saturatedZone (issue 14, measured 2026-12-04; the
+        // measurements in README.md, Nonlinear engine): there the cells
+        // with p_a < 0 in Newton's iterates are boiling cells of nearly
+        // pure vapour, the accepted roots had p_a >= 0 without a
+        // projection in every run measured (airLost refuses any other),
+        // and projecting moved the rejected sub-steps without a trend
         return 0;
     }
     for (label c = 0; c < x.size()/3; ++c)
@@ -686,10 +676,12 @@ bool Foam::pendularNewton::chordStep
         x = x0;
         return false;
     }
+    // (valid: x passed valid() above, and a projection by less than pTol
+    // only raises p_g onto p_w, which raises rho_g)
     out.update = u;
     out.iterations += 1;
-    out.valid = valid(res, x, pRef);
-    out.converged = out.valid;
+    out.valid = true;
+    out.converged = true;
     if (verbose_)
     {
         Info<< "    Newton " << out.iterations << ": chord step, update/tol (T "
