@@ -66,7 +66,12 @@ Foam::pendularNewton::pendularNewton
         Info<< "OptimisationSwitch pendularNewtonNoAirProjection = "
             << nanInjection::pendularNewtonNoAirProjection
             << ": pendularNewton's iterates not projected onto"
-            << " non-negative air (test only)" << endl;
+            << " non-negative air"
+            << (
+                   nanInjection::pendularNewtonNoAirProjection > 1
+                 ? ", nor refused for a gas density <= 0" : ""
+               )
+            << " (test only)" << endl;
     }
 }
 
@@ -521,7 +526,10 @@ bool Foam::pendularNewton::valid
     // fields bit for bit, 11163 -> 11152 Newton iterations (those
     // sub-steps failed later anyway, mostly with an oscillating phase).
     // Without saturatedZone the projection keeps rho_g > 0 after an
-    // update (model A); the first iterate is checked too
+    // update (model A); the first iterate is checked too. (Test only:
+    // pendularNewtonNoAirProjection 2 leaves rho_g <= 0 to airLost; every
+    // rank sees the same switch)
+    const bool rhoGChecked = nanInjection::pendularNewtonNoAirProjection < 2;
     bool ok = true;
     for (label c = 0; c < x.size()/3 && ok; ++c)
     {
@@ -529,6 +537,7 @@ bool Foam::pendularNewton::valid
             cellValid(res, x, c, pRef)
          && (
                 res.phases()[c] == pendularResidual::liquidOnly
+             || !rhoGChecked
              || res.state(c, &x[3*c]).rhoG > 0
             );
     }
