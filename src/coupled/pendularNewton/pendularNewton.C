@@ -423,19 +423,35 @@ bool Foam::pendularNewton::airLost
 ) const
 {
     // (an iterate that passed valid(): rho_g > 0 in every cell with gas,
-    // its states cached)
+    // its states cached.) A converged root's p_a = p_g - p_w(T, W) is
+    // known to pTol + |dp_w/dT| TTol + |dp_w/dW| WTol (the convergence
+    // test bounds the updates of T, p_g and W by their tolerances; p_w up
+    // to 3.6 kPa/K at 100 C): refused below minus that, the derivatives by
+    // one-sided differences over the tolerances, in the cells below -pTol
+    // only
     label n = 0;
     scalar paMin = GREAT;
     for (label c = 0; c < x.size()/3; ++c)
     {
-        if (res.phases()[c] != pendularResidual::liquidOnly)
+        if (res.phases()[c] == pendularResidual::liquidOnly)
         {
-            const scalar pa = res.state(c, &x[3*c]).pa;
-            if (pa <= -pTol_)
-            {
-                ++n;
-                paMin = min(paMin, pa);
-            }
+            continue;
+        }
+        const scalar pa = res.state(c, &x[3*c]).pa;
+        if (pa > -pTol_)
+        {
+            continue;
+        }
+        const scalar pw = res.state(c, &x[3*c]).pw;
+        scalar xc[3] = {x[3*c] + TTol_, x[3*c + 1], x[3*c + 2]};
+        const scalar dpwT = mag(res.state(c, xc).pw - pw);
+        xc[0] = x[3*c];
+        xc[2] += WTolAbs_;
+        const scalar dpwW = mag(res.state(c, xc).pw - pw);
+        if (pa <= -(pTol_ + dpwT + dpwW))
+        {
+            ++n;
+            paMin = min(paMin, pa);
         }
     }
     reduce(n, sumOp<label>());
@@ -445,8 +461,9 @@ bool Foam::pendularNewton::airLost
         out.failure =
             "the solution holds less than no air in " + Foam::name(n)
           + " cell(s) with gas (air partial pressure p_g - p_w down to "
-          + Foam::name(paMin) + " Pa, at or below -pTol: a root outside"
-            " the model's range)";
+          + Foam::name(paMin) + " Pa, below minus its uncertainty pTol +"
+            " |dp_w/dT| TTol + |dp_w/dW| WTol: a root outside the model's"
+            " range)";
     }
     return n > 0;
 }
