@@ -7,7 +7,8 @@ run's distance to its discrete solution is within its tolerances, the two
 discrete solutions are the same by the sine's mirror symmetry about L/4
 and 3L/4); the strip between walls at 0 and L (no cyclic pair) at least
 1e3 TTol away from the periodic strip's T (the pair carries flux); the
-half and walled runs' balances within 1e-10. A fourth argument, with
+periodic (Newton, with or without liquid
+flow), half and walled runs' balances within 1e-10. A fourth argument, with
 liquid flow (3L): the periodic run without it, whose W must differ."""
 import os
 import sys
@@ -43,7 +44,7 @@ if dry:
     dW = max(abs(x - y) for x, y in zip(a, b))/max(abs(x) for x in a)
     c.true('W: max |with - without liquid flow|/max W >= 1e-3',
            dW >= 1e-3, '%.4g' % dW)
-for d in (half, walls):
+for d in (periodic, half, walls):
     c.le('%s: worst relative imbalance' % os.path.basename(d),
          hc.worst_relative_imbalance(os.path.join(d, 'log.pendularFoam')),
          1e-10)

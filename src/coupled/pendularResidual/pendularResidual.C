@@ -7,6 +7,8 @@
 #include "surfaceFields.H"
 #include "processorFvPatch.H"
 #include "cyclicFvPatch.H"
+#include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
 #include "waterModel.H"
@@ -82,14 +84,11 @@ Foam::pendularResidual::pendularResidual
     snGradCorr_(),
     deltaCoeffs_()
 {
+    checkSnGradSchemes(fvMesh_);
     forAll(deltaCoeffs_, k)
     {
         deltaCoeffs_[k] =
             twoPointDeltaCoeffs(fvMesh_, correctedFieldNames()[k]);
-        if (!deltaCoeffs_[k])
-        {
-            checkSnGradSchemes(fvMesh_);
-        }
     }
     if (nonOrthCorrected_)
     {
@@ -702,6 +701,97 @@ void Foam::pendularResidual::checkCoupledPatches(const fvMesh& mesh)
 }
 
 
+void Foam::pendularResidual::checkLiquidCoupledPatches
+(
+    const fvMesh& mesh,
+    const pendularMedium& medium
+)
+{
+    // (collective: on every rank, before any rank-dependent test)
+    const bool nonOrth = meshNonOrthogonality::New(mesh).corrected();
+    const liquidFlow* liquid = medium.liquidFlowPtr();
+    if (!liquid)
+    {
+        return;
+    }
+    const vector& g = liquid->darcy().g();
+    const scalar tol = 1e-6*mag(g);
+    const fileName gFile(mesh.time().constant()/"g");
+    const fileName boundaryFile(mesh.boundaryMesh().objectPath());
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        // The cyclic pairs, whole or split over processors
+        const cyclicPolyPatch* cyc = isA<cyclicPolyPatch>(pp);
+        const processorCyclicPolyPatch* procCyc =
+            isA<processorCyclicPolyPatch>(pp);
+        if (!cyc && !procCyc)
+        {
+            continue;
+        }
+        const coupledPolyPatch& cpp = refCast<const coupledPolyPatch>(pp);
+        const coupledPolyPatch& named =
+            cyc ? refCast<const coupledPolyPatch>(pp) : procCyc->referPatch();
+        // A rotation R with R g != g: g.x is not the same at a face and at
+        // its image, the liquid's potential not periodic
+        for (const tensor& R : cpp.forwardT())
+        {
+            if (mag((R & g) - g) <= tol)
+            {
+                continue;
+            }
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, gFile, -1, -1
+            )
+                << "Gravity g = " << g << " in " << gFile << " is not"
+                << " parallel to the rotation axis ";
+            if (isA<cyclicPolyPatch>(named))
+            {
+                FatalIOError
+                    << refCast<const cyclicPolyPatch>(named).rotationAxis();
+            }
+            FatalIOError
+                << " (rotation tensor " << R << ") of cyclic patch '"
+                << named.name() << "' in " << boundaryFile << ": the"
+                << " liquid's potential p_g - p_c - rho_l g.x is not"
+                << " periodic across the pair; valid with liquidFlow: a"
+                << " rotational pair whose axis is parallel to g, or a"
+                << " translational pair" << exit(FatalIOError);
+        }
+        // A translation s with g.s != 0 on a non-orthogonal mesh: the
+        // potential's cell values across the pair differ by rho_l g.s,
+        // which the non-orthogonal correction's gradients take as a jump
+        // (updateDeferred; the two-point part, liquidDarcyFlux::massFlux,
+        // takes g.d with the face's own d)
+        if (!nonOrth)
+        {
+            continue;
+        }
+        for (const vector& sep : cpp.separation())
+        {
+            if (mag(g & sep) <= tol*mag(sep))
+            {
+                continue;
+            }
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, gFile, -1, -1
+            )
+                << "Gravity g = " << g << " in " << gFile << " has a"
+                << " component along the separation " << sep << " m of"
+                << " cyclic patch '" << named.name() << "' in "
+                << boundaryFile << " on a non-orthogonal mesh: the"
+                << " non-orthogonal correction of the liquid's potential"
+                << " p_g - p_c - rho_l g.x would take its jump rho_l g.s"
+                << " across the pair as a gradient; valid with liquidFlow"
+                << " and a translational pair: g normal to its separation"
+                << " (g.s = 0), or an orthogonal mesh"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::wordList Foam::pendularResidual::correctedFieldNames()
 {
     return wordList({"T", "p", "omegaW", "liquidPotential"});
@@ -755,13 +845,32 @@ Foam::word Foam::pendularResidual::snGradSchemeName
 }
 
 
+Foam::wordList Foam::pendularResidual::supportedSnGradSchemes()
+{
+    return wordList
+    (
+        {"corrected", "uncorrected", "limited", "faceCorrected", "orthogonal"}
+    );
+}
+
+
 void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
 {
+    const wordList valid(supportedSnGradSchemes());
     for (const word& name : correctedFieldNames())
     {
-        if (twoPointDeltaCoeffs(mesh, name))
+        // By name first: the fit schemes and skewCorrected have the mesh's
+        // delta coefficients but corrections of their own, which an
+        // orthogonal mesh does not skip (updateDeferred does)
+        const word scheme = snGradSchemeName(mesh, name);
+        if (valid.found(scheme) && twoPointDeltaCoeffs(mesh, name))
         {
             continue;
+        }
+        string validList;
+        for (const word& v : valid)
+        {
+            validList += (validList.empty() ? "" : ", ") + v;
         }
         const dictionary& snGradDict =
             mesh.schemesDict().subDict("snGradSchemes");
@@ -769,13 +878,11 @@ void Foam::pendularResidual::checkSnGradSchemes(const fvMesh& mesh)
         FatalIOErrorInFunction(snGradDict)
             << "Keyword '" << (snGradDict.found(key) ? key : word("default"))
             << "' in " << snGradDict.name() << ": the snGrad scheme of "
-            << name << " (" << snGradSchemeName(mesh, name) << ") is not"
-            << " supported by pendularFoam's Newton engine, whose face"
-            << " fluxes take the two-point gradient with the mesh's delta"
-            << " coefficients: valid schemes corrected, uncorrected,"
-            << " limited, faceCorrected, orthogonal, CentredFit,"
-            << " linearFit, quadraticFit (or nonlinear { engine"
-            << " segregated; })"
+            << name << " (" << scheme << ") is not supported by"
+            << " pendularFoam's Newton engine, whose face fluxes take the"
+            << " two-point gradient with the mesh's delta coefficients and"
+            << " the scheme's non-orthogonal correction only: valid schemes "
+            << validList.c_str() << " (or nonlinear { engine segregated; })"
             << exit(FatalIOError);
     }
 }
