@@ -1055,7 +1055,7 @@ Foam::label Foam::blockSystem::slot(const label celli, const label col) const
 }
 
 
-void Foam::blockSystem::addBlock
+inline void Foam::blockSystem::addBlock
 (
     const label celli,
     const label j,
@@ -1066,13 +1066,14 @@ void Foam::blockSystem::addBlock
     // Row celli's m blocks are held as PETSc's row-oriented input of one
     // block row: value (r, c) of block j at r m B + j B + c
     const label B = nBlock_;
-    const label m = rowStart_[celli + 1] - rowStart_[celli];
-    scalar* v = &values_[B*B*rowStart_[celli] + j*B];
-    for (label r = 0; r < B; ++r)
+    const label stride = B*(rowStart_[celli + 1] - rowStart_[celli]);
+    scalar* __restrict__ v = &values_[B*B*rowStart_[celli] + j*B];
+    const scalar* __restrict__ Mv = M.cdata();
+    for (label r = 0; r < B; ++r, v += stride, Mv += B)
     {
         for (label c = 0; c < B; ++c)
         {
-            v[r*m*B + c] += sign*M(r, c);
+            v[c] += sign*Mv[c];
         }
     }
 }
