@@ -8,10 +8,12 @@
 #include "processorPolyPatch.H"
 #include "cyclicPolyPatch.H"
 #include "checkedRead.H"
+#include "DynamicList.H"
 #include <petscksp.h>
 #include <cfenv>
 #include <cmath>
 #include <sstream>
+#include <algorithm>
 #include <type_traits>
 
 static_assert
@@ -209,21 +211,78 @@ void Foam::blockSystem::createMatrix(const matrixType type)
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
 
-    // Block non-zeros per block row: on this rank (d), on others (o)
-    List<PetscInt> dnnz(nCells, 1);
-    List<PetscInt> onnz(nCells, 0);
+    // The block columns of each block row (global indices, sorted, each
+    // once): the cell's own, its internal faces' neighbours, the cells
+    // across its coupled boundary faces
+    List<DynamicList<label>> rowCols(nCells);
+    forAll(rowCols, celli)
+    {
+        rowCols[celli].append(offset_ + celli);
+    }
     for (label facei = 0; facei < nInternal; ++facei)
     {
-        ++dnnz[own[facei]];
-        ++dnnz[nei[facei]];
+        rowCols[own[facei]].append(offset_ + nei[facei]);
+        rowCols[nei[facei]].append(offset_ + own[facei]);
     }
     forAll(nbrGlobalCell_, bFacei)
     {
-        const label nbr = nbrGlobalCell_[bFacei];
-        if (nbr >= 0)
+        if (nbrGlobalCell_[bFacei] >= 0)
         {
-            const label celli = own[nInternal + bFacei];
-            if (globalCells_.isLocal(nbr))
+            rowCols[own[nInternal + bFacei]].append(nbrGlobalCell_[bFacei]);
+        }
+    }
+    rowStart_.setSize(nCells + 1);
+    rowStart_[0] = 0;
+    forAll(rowCols, celli)
+    {
+        DynamicList<label>& cols = rowCols[celli];
+        std::sort(cols.begin(), cols.end());
+        cols.resize(std::unique(cols.begin(), cols.end()) - cols.begin());
+        rowStart_[celli + 1] = rowStart_[celli] + cols.size();
+    }
+    cols_.setSize(rowStart_[nCells]);
+    forAll(rowCols, celli)
+    {
+        std::copy
+        (
+            rowCols[celli].cbegin(), rowCols[celli].cend(),
+            &cols_[rowStart_[celli]]
+        );
+    }
+    values_.setSize(nBlock_*nBlock_*cols_.size(), Zero);
+
+    // The slots of the blocks each assembly call adds to
+    diagSlot_.setSize(nCells);
+    forAll(diagSlot_, celli)
+    {
+        diagSlot_[celli] = slot(celli, offset_ + celli);
+    }
+    ownerSlot_.setSize(nInternal);
+    neighbourSlot_.setSize(nInternal);
+    for (label facei = 0; facei < nInternal; ++facei)
+    {
+        ownerSlot_[facei] = slot(own[facei], offset_ + nei[facei]);
+        neighbourSlot_[facei] = slot(nei[facei], offset_ + own[facei]);
+    }
+    nbrSlot_.setSize(nbrGlobalCell_.size(), -1);
+    forAll(nbrGlobalCell_, bFacei)
+    {
+        if (nbrGlobalCell_[bFacei] >= 0)
+        {
+            nbrSlot_[bFacei] =
+                slot(own[nInternal + bFacei], nbrGlobalCell_[bFacei]);
+        }
+    }
+
+    // Block non-zeros per block row: on this rank (d), on others (o):
+    // exactly the pattern
+    List<PetscInt> dnnz(nCells, 0);
+    List<PetscInt> onnz(nCells, 0);
+    forAll(rowCols, celli)
+    {
+        for (const label col : rowCols[celli])
+        {
+            if (globalCells_.isLocal(col))
             {
                 ++dnnz[celli];
             }
@@ -981,20 +1040,42 @@ void Foam::blockSystem::checkBlock
 }
 
 
-void Foam::blockSystem::addBlocks
+Foam::label Foam::blockSystem::slot(const label celli, const label col) const
+{
+    const label* first = &cols_[rowStart_[celli]];
+    const label* last = &cols_[rowStart_[celli + 1]];
+    const label* it = std::lower_bound(first, last, col);
+    if (it == last || *it != col)
+    {
+        FatalErrorInFunction
+            << "Block column " << col << " is not in the pattern of cell "
+            << celli << "'s row" << abort(FatalError);
+    }
+    return label(it - first);
+}
+
+
+inline void Foam::blockSystem::addBlock
 (
-    const label nRows,
-    const label* rows,
-    const label nCols,
-    const label* cols,
-    const scalar* values
+    const label celli,
+    const label j,
+    const scalar sign,
+    const scalarSquareMatrix& M
 )
 {
-    petscSession::check
-    (
-        MatSetValuesBlocked(A_, nRows, rows, nCols, cols, values, ADD_VALUES),
-        "MatSetValuesBlocked"
-    );
+    // Row celli's m blocks are held as PETSc's row-oriented input of one
+    // block row: value (r, c) of block j at r m B + j B + c
+    const label B = nBlock_;
+    const label stride = B*(rowStart_[celli + 1] - rowStart_[celli]);
+    scalar* __restrict__ v = &values_[B*B*rowStart_[celli] + j*B];
+    const scalar* __restrict__ Mv = M.cdata();
+    for (label r = 0; r < B; ++r, v += stride, Mv += B)
+    {
+        for (label c = 0; c < B; ++c)
+        {
+            v[c] += sign*Mv[c];
+        }
+    }
 }
 
 
@@ -1038,7 +1119,6 @@ Foam::blockSystem::blockSystem
     ksp_(nullptr),
     solverName_(),
     prefix_(),
-    faceValues_(4*nBlock*nBlock),
     cpr_(),
     failure_(),
     relTol_(0),
@@ -1074,7 +1154,7 @@ Foam::blockSystem::~blockSystem()
 
 void Foam::blockSystem::clear()
 {
-    petscSession::check(MatZeroEntries(A_), "MatZeroEntries");
+    values_ = Zero;
     source_ = Zero;
 }
 
@@ -1082,8 +1162,7 @@ void Foam::blockSystem::clear()
 void Foam::blockSystem::addDiag(const label celli, const scalarSquareMatrix& D)
 {
     checkBlock(D, "addDiag");
-    const label row = offset_ + celli;
-    addBlocks(1, &row, 1, &row, D.cdata());
+    addBlock(celli, diagSlot_[celli], 1, D);
 }
 
 
@@ -1097,29 +1176,15 @@ void Foam::blockSystem::addFaceFlux
     checkBlock(dFdOwn, "addFaceFlux");
     checkBlock(dFdNei, "addFaceFlux");
 
-    const label idx[2] =
-    {
-        offset_ + mesh_.faceOwner()[facei],
-        offset_ + mesh_.faceNeighbour()[facei]
-    };
-
-    // Rows: owner (+F), neighbour (-F); columns: owner, neighbour. One
-    // row-major (2B) x (2B) array, no temporary matrix
-    const label B = nBlock_;
-    for (label bi = 0; bi < 2; ++bi)
-    {
-        const scalar sign = bi == 0 ? 1 : -1;
-        for (label r = 0; r < B; ++r)
-        {
-            scalar* row = &faceValues_[(bi*B + r)*2*B];
-            for (label c = 0; c < B; ++c)
-            {
-                row[c] = sign*dFdOwn(r, c);
-                row[B + c] = sign*dFdNei(r, c);
-            }
-        }
-    }
-    addBlocks(2, idx, 2, idx, faceValues_.cdata());
+    // Rows: owner (+F), neighbour (-F); columns: owner, neighbour (the
+    // signs exact: the values PETSc's ADD_VALUES summed before, in the
+    // same order)
+    const label o = mesh_.faceOwner()[facei];
+    const label n = mesh_.faceNeighbour()[facei];
+    addBlock(o, diagSlot_[o], 1, dFdOwn);
+    addBlock(o, ownerSlot_[facei], 1, dFdNei);
+    addBlock(n, neighbourSlot_[facei], -1, dFdOwn);
+    addBlock(n, diagSlot_[n], -1, dFdNei);
 }
 
 
@@ -1131,21 +1196,37 @@ void Foam::blockSystem::addBoundaryFaceFlux
 )
 {
     checkBlock(dFdOwn, "addBoundaryFaceFlux");
-    const label row = offset_ + mesh_.faceOwner()[facei];
-    addBlocks(1, &row, 1, &row, dFdOwn.cdata());
+    const label o = mesh_.faceOwner()[facei];
+    addBlock(o, diagSlot_[o], 1, dFdOwn);
 
-    const label nbr = nbrGlobalCell(facei);
-    if (nbr >= 0)
+    const label j = nbrSlot_[facei - mesh_.nInternalFaces()];
+    if (j >= 0)
     {
         checkBlock(dFdNbr, "addBoundaryFaceFlux");
-        const label col = nbr;
-        addBlocks(1, &row, 1, &col, dFdNbr.cdata());
+        addBlock(o, j, 1, dFdNbr);
     }
 }
 
 
 void Foam::blockSystem::assemble()
 {
+    // One call per block row, every block of the pattern inserted: no
+    // zeroing of the matrix needed
+    const label B = nBlock_;
+    forAll(diagSlot_, celli)
+    {
+        const PetscInt row = offset_ + celli;
+        const label start = rowStart_[celli];
+        petscSession::check
+        (
+            MatSetValuesBlocked
+            (
+                A_, 1, &row, rowStart_[celli + 1] - start, &cols_[start],
+                &values_[B*B*start], INSERT_VALUES
+            ),
+            "MatSetValuesBlocked"
+        );
+    }
     petscSession::check
     (
         MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY),
