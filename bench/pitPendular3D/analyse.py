@@ -4,13 +4,14 @@ nonlinear iterations per step, rejected sub-steps, peak memory of each
 rank), the ratios pendularFoam/ahcFoam and full range/pendular, the 2-rank
 parallel efficiency and the memory per million cells, from log.<solver>
 (the step lines of either solver, its balances) and log.time
-(/usr/bin/time -v of each rank).
+(/usr/bin/time -v of each rank, log.time.N).
 
     analyse.py NCELLS NCELLS_COARSE HOURS RUN...
 
 RUN: a folder NAME_RANKS (pendular_1, pendular_2, ahc_1, ahc_2,
-pendularCoarse_1, segregated_1, fullRange_1, fullRange_2).
+pendularCoarse_1, segregated_1, bjacobi_1, fullRange_1, fullRange_2).
 """
+import glob
 import os
 import re
 import sys
@@ -39,7 +40,11 @@ def run_figures(case):
         r'^%s: deltaT = \S+, iterations = (\d+)' % solver, text, re.M))
     imbalance = [abs(float(x)) for x in re.findall(
         r'imbalance += \S+ \(relative (\S+)\)', text)]
-    t = open(os.path.join(case, 'log.time')).read()
+    times = sorted(glob.glob(os.path.join(case, 'log.time.*')))
+    if len(times) != int(case.rsplit('_', 1)[1]):
+        sys.exit('pitPendular3D: %s: %d log.time.N for %s ranks'
+                 % (case, len(times), case.rsplit('_', 1)[1]))
+    t = ''.join(open(f).read() for f in times)
     rss = [int(m)/1024 for m in re.findall(
         r'Maximum resident set size \(kbytes\): (\d+)', t)]
     wall = max(hms(m) for m in re.findall(
@@ -85,6 +90,8 @@ def main():
     ratio('pendular_2', 'ahc_2', 'pendularFoam / ahcFoam, 2 ranks')
     ratio('segregated_1', 'pendular_1',
           'pendularFoam segregated / Newton engine, 1 rank')
+    ratio('bjacobi_1', 'pendular_1',
+          'pendularFoam block Jacobi / cpr (default), 1 rank')
     ratio('fullRange_1', 'pendular_1', 'full range / pendular, 1 rank')
     ratio('fullRange_2', 'pendular_2', 'full range / pendular, 2 ranks')
     print('Parallel efficiency on 2 ranks, E = t1/(2 t2) (wall times; and'

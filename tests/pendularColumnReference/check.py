@@ -10,13 +10,19 @@ the report's column at 1, 3, 6, 9 and 12 h:
   the reference: measured 0.2-1.8 % at 3-12 h (first-order steps against
   BDF2, 1 mm cells against 0.5 mm nodes), while a Kelvin length twice too
   long leaves 4.6 times more;
-- the water and energy balances of pendularFoam close to 1e-8."""
+- the water and energy balances of pendularFoam close to 1e-8.
+A second argument sets the temperature tolerance: 0.01 K for the run with
+variable-step BDF2 (`timeScheme BDF2; localErrorTol 1;`, pendularFoam's
+default, which tutorials/column1D does not take), second order in time:
+measured 2026-12-04 within 0.0017 K where backward Euler is 0.077 K off
+(5 cm, 1 h), so 0.01 K fails a first-order run."""
 import csv
 import os
 import sys
 import hearthcheck as hc
 
 ref = sys.argv[1]
+tolT = float(sys.argv[2]) if len(sys.argv) > 2 else 0.5
 c = hc.Check('pendularColumnReference')
 N, H, phi, rhoL, alpha0 = 100, 0.1, 0.26, 1000.0, 0.005
 depth = [H - (i + 0.5)*H/N for i in range(N)]      # cell centres, bottom first
@@ -50,7 +56,7 @@ for t in (3600, 10800, 21600, 32400, 43200):
     W = hc.read_internal_field('%d/W' % t)
     for z in (0.01, 0.02, 0.05):
         c.le('|T - reference| at %g cm, %g h [K]' % (100*z, t/3600),
-             abs(interp(z, depth, T) - interp(z, zr, Tr)), 0.5)
+             abs(interp(z, depth, T) - interp(z, zr, Tr)), tolT)
     fr, ff = front(zr, ar), front(depth, alpha)
     waterRef = min(history, key=lambda r: abs(float(r['t']) - t))
     waterRef = float(waterRef['water'])
