@@ -714,8 +714,12 @@ bool Foam::pendularNewton::chordStep
     // solve; a projection below pTol is made, as there): the correction
     // moves p_w with T and W, up to dp_w/dT TTol, 3.6 kPa/K at 100 C
     // (0.36 mPa at tutorials/wetHearthCoupled's TTol 1e-7 K, pTol 1e-6
-    // Pa). Before, a chord step could end a sub-step at p_a < 0 (not
-    // measured how often)
+    // Pa). Before, a chord step could end a sub-step at p_a < 0. Measured
+    // (2026-12-04): never sent back in any run tried (README.md); the
+    // projections it makes are of cells the Newton updates hold at p_a =
+    // 0, moved below by round-off (5 to 32 units of p_g's: 128 chord steps
+    // of tests/pendularGasWithoutAir's heat pipe, section 6; without them
+    // 1502 cells with p_a < 0 in its converged solves)
     if (!valid(res, x, pRef))
     {
         x = x0;
