@@ -63,10 +63,17 @@ def read_solver_cost(log):
     the time steps of the per-step summary line
       '<solver>: deltaT = .., iterations = N, sub-steps = M, rejected = R, ..'
     -> dict(steps, iterations, subSteps, rejected). A log without such a
-    line (the solver failed at once) gives zero steps."""
-    cost = dict(steps=0, iterations=0, subSteps=0, rejected=0)
+    line (the solver failed at once) gives zero steps. pendularFoam's
+    Newton engine ends the line with its air guards of the step,
+      '.., refused for less than no air = A, air projections = P'
+    (pendularNewton::airLost, airProjection): their sums are airLost and
+    airProjections (0 without them)."""
+    cost = dict(steps=0, iterations=0, subSteps=0, rejected=0, airLost=0,
+                airProjections=0)
     pattern = re.compile(r'^(ahcFoam|pendularFoam|richards): deltaT = \S+, iterations = '
-                         r'(\d+), sub-steps = (\d+), rejected = (\d+)')
+                         r'(\d+), sub-steps = (\d+), rejected = (\d+)'
+                         r'(?:.*, refused for less than no air = (\d+), air'
+                         r' projections = (\d+))?')
     with open(log) as f:
         for line in f:
             m = pattern.match(line)
@@ -75,7 +82,28 @@ def read_solver_cost(log):
                 cost['iterations'] += int(m.group(2))
                 cost['subSteps'] += int(m.group(3))
                 cost['rejected'] += int(m.group(4))
+                cost['airLost'] += int(m.group(5) or 0)
+                cost['airProjections'] += int(m.group(6) or 0)
     return cost
+
+
+def read_air_guards(log):
+    """pendularFoam's Newton engine's air guards since the start, at each
+    write (the line after the air partial pressure's report) -> list of
+    dict(airLost, projections, chordSentBack, chordProjected, belowZero):
+    sub-steps refused by airLost, cells projected onto p_a >= 0 by pTol or
+    more, chord steps sent back by their air projection and taken after a
+    projection below pTol, cells with p_a < 0 in converged solves."""
+    pattern = re.compile(
+        r'^Air guards of the Newton engine since the start: (\d+) sub-steps'
+        r' refused for less than no air \(airLost\), (\d+) cell projections'
+        r' onto p_a >= 0 by pTol or more; chord steps: (\d+) sent back by'
+        r' their air projection, (\d+) taken with cells projected by less'
+        r' than pTol; (\d+) cells with p_a < 0 in converged solves', re.M)
+    keys = ('airLost', 'projections', 'chordSentBack', 'chordProjected',
+            'belowZero')
+    with open(log) as f:
+        return [dict(zip(keys, map(int, m))) for m in pattern.findall(f.read())]
 
 
 def cost_allowance(stated, margin=COST_MARGIN, slack=0):

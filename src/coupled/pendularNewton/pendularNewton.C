@@ -430,6 +430,7 @@ bool Foam::pendularNewton::airLost
     // one-sided differences over the tolerances, in the cells below -pTol
     // only
     label n = 0;
+    label nBelow = 0;
     scalar paMin = GREAT;
     for (label c = 0; c < x.size()/3; ++c)
     {
@@ -438,6 +439,7 @@ bool Foam::pendularNewton::airLost
             continue;
         }
         const scalar pa = res.state(c, &x[3*c]).pa;
+        nBelow += pa < 0;
         if (pa > -pTol_)
         {
             continue;
@@ -455,7 +457,10 @@ bool Foam::pendularNewton::airLost
         }
     }
     reduce(n, sumOp<label>());
+    reduce(nBelow, sumOp<label>());
     reduce(paMin, minOp<scalar>());
+    out.airLost = n > 0;
+    out.nAirBelowZero = nBelow;
     if (n > 0)
     {
         out.failure =
@@ -567,10 +572,15 @@ Foam::label Foam::pendularNewton::airProjection
 (
     const pendularResidual& res,
     scalarField& x,
-    const scalar pRef
+    const scalar pRef,
+    label* nMoved
 ) const
 {
     label n = 0;
+    if (nMoved)
+    {
+        *nMoved = 0;
+    }
     if (nanInjection::pendularNewtonNoAirProjection)
     {
         // (test only: every rank sees the same switch)
@@ -619,6 +629,15 @@ Foam::label Foam::pendularNewton::airProjection
         {
             ++n;
         }
+        if (nMoved)
+        {
+            ++*nMoved;
+        }
+    }
+    if (nMoved)
+    {
+        // (the same pointer on every rank: collective as the call)
+        reduce(*nMoved, sumOp<label>());
     }
     return returnReduce(n, sumOp<label>());
 }
@@ -695,15 +714,34 @@ bool Foam::pendularNewton::chordStep
     // solve; a projection below pTol is made, as there): the correction
     // moves p_w with T and W, up to dp_w/dT TTol, 3.6 kPa/K at 100 C
     // (0.36 mPa at tutorials/wetHearthCoupled's TTol 1e-7 K, pTol 1e-6
-    // Pa). Before, a chord step could end a sub-step at p_a < 0 (not
-    // measured how often)
-    if (!valid(res, x, pRef) || airProjection(res, x, pRef) > 0)
+    // Pa). Before, a chord step could end a sub-step at p_a < 0. Measured
+    // (2026-12-04): never sent back in any run tried (README.md); the
+    // projections it makes are of cells the Newton updates hold at p_a =
+    // 0, moved below by round-off (5 to 32 units of p_g's: 128 chord steps
+    // of tests/pendularGasWithoutAir's heat pipe, section 6; without them
+    // 1502 cells with p_a < 0 in its converged solves)
+    if (!valid(res, x, pRef))
     {
+        x = x0;
+        return false;
+    }
+    label nAirMoved = 0;
+    const label nAirProjected = airProjection(res, x, pRef, &nAirMoved);
+    if (nAirProjected > 0)
+    {
+        ++out.nChordAirGuard;
+        if (verbose_)
+        {
+            Info<< "    Newton " << out.iterations << ": chord step not"
+                << " taken, its air projection moves " << nAirProjected
+                << " cell(s) by pTol or more" << endl;
+        }
         x = x0;
         return false;
     }
     // (valid: x passed valid() above, and a projection by less than pTol
     // only raises p_g onto p_w, which raises rho_g)
+    out.nChordAirProjected += nAirMoved > 0;
     out.update = u;
     out.iterations += 1;
     out.valid = true;
@@ -989,6 +1027,11 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
     out.judged = GREAT;
     out.update = GREAT;
     out.unknownsFloorMax = 0;
+    out.nAirProjected = 0;
+    out.nChordAirGuard = 0;
+    out.nChordAirProjected = 0;
+    out.nAirBelowZero = 0;
+    out.airLost = false;
     if (!out.valid)
     {
         return out;
@@ -1549,7 +1592,9 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 
         // The air of the cells with gas kept non-negative (issue 14): p_g
         // projected onto p_w where the update took it below
-        nProjected += airProjection(res, x, pRef);
+        const label nAirProjected = airProjection(res, x, pRef);
+        nProjected += nAirProjected;
+        out.nAirProjected += nAirProjected;
 
         // The phase states from the new iterate: a switch is not a
         // converged iteration
