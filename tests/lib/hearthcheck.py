@@ -177,21 +177,8 @@ class Check:
         and rejected sub-steps it was measured to need when the budget was
         set (`iterations`, `rejected`), plus the margin. A run much cheaper
         than its budget passes but says so: the budget is then stale."""
-        cost = read_solver_cost(log)
-        maxIter = cost_allowance(iterations, margin)
-        maxRejected = cost_allowance(rejected, margin, REJECTED_SLACK)
-        ok = cost['steps'] > 0 and cost['iterations'] <= maxIter \
-            and cost['rejected'] <= maxRejected
-        self.failed += not ok
-        print('  %s cost of %-52s %d iterations (budget %d, allowed %d), '
-              '%d rejected (budget %d, allowed %d), %d steps'
-              % ('ok  ' if ok else 'FAIL', what, cost['iterations'],
-                 iterations, maxIter, cost['rejected'], rejected, maxRejected,
-                 cost['steps']))
-        if ok and cost['iterations'] < 0.5*iterations:
-            print('       note: under half its budget: lower the budget to '
-                  'the new count if the saving is understood')
-        return ok
+        return self._cost(what, [log], iterations, rejected, margin,
+                          REJECTED_SLACK)
 
     def cost_sum(self, what, logs, iterations, rejected, margin):
         """The runs of `logs` together within an aggregate cost budget: the
@@ -200,20 +187,24 @@ class Check:
         runs whose single counts follow round-off of the Newton path (the
         sub-step sequence) while their sum does not: the margin is then the
         sum's measured spread, stated where the budget is."""
+        return self._cost(what, logs, iterations, rejected, margin, 0)
+
+    def _cost(self, what, logs, iterations, rejected, margin, slack):
         costs = [read_solver_cost(log) for log in logs]
         its = sum(c['iterations'] for c in costs)
         rej = sum(c['rejected'] for c in costs)
+        stepped = all(c['steps'] > 0 for c in costs)
         maxIter = cost_allowance(iterations, margin)
-        maxRejected = cost_allowance(rejected, margin)
-        ok = all(c['steps'] > 0 for c in costs) and its <= maxIter \
-            and rej <= maxRejected
+        maxRejected = cost_allowance(rejected, margin, slack)
+        ok = stepped and its <= maxIter and rej <= maxRejected
         self.failed += not ok
         print('  %s cost of %-52s %d iterations (budget %d, allowed %d), '
-              '%d rejected (budget %d, allowed %d), %d runs%s'
+              '%d rejected (budget %d, allowed %d), %s'
               % ('ok  ' if ok else 'FAIL', what, its, iterations, maxIter,
-                 rej, rejected, maxRejected, len(logs),
-                 '' if all(c['steps'] > 0 for c in costs)
-                 else ' (a run without steps)'))
+                 rej, rejected, maxRejected,
+                 '%d steps' % costs[0]['steps'] if len(logs) == 1
+                 else '%d runs%s' % (len(logs), '' if stepped
+                                     else ' (a run without steps)')))
         if ok and its < 0.5*iterations:
             print('       note: under half its budget: lower the budget to '
                   'the new count if the saving is understood')
