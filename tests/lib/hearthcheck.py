@@ -205,18 +205,35 @@ class Check:
         and rejected sub-steps it was measured to need when the budget was
         set (`iterations`, `rejected`), plus the margin. A run much cheaper
         than its budget passes but says so: the budget is then stale."""
-        cost = read_solver_cost(log)
+        return self._cost(what, [log], iterations, rejected, margin,
+                          REJECTED_SLACK)
+
+    def cost_sum(self, what, logs, iterations, rejected, margin):
+        """The runs of `logs` together within an aggregate cost budget: the
+        sums of their nonlinear iterations and rejected sub-steps within
+        `iterations` and `rejected` (1 + margin), each run with steps. For
+        runs whose single counts follow round-off of the Newton path (the
+        sub-step sequence) while their sum does not: the margin is then the
+        sum's measured spread, stated where the budget is."""
+        return self._cost(what, logs, iterations, rejected, margin, 0)
+
+    def _cost(self, what, logs, iterations, rejected, margin, slack):
+        costs = [read_solver_cost(log) for log in logs]
+        its = sum(c['iterations'] for c in costs)
+        rej = sum(c['rejected'] for c in costs)
+        stepped = all(c['steps'] > 0 for c in costs)
         maxIter = cost_allowance(iterations, margin)
-        maxRejected = cost_allowance(rejected, margin, REJECTED_SLACK)
-        ok = cost['steps'] > 0 and cost['iterations'] <= maxIter \
-            and cost['rejected'] <= maxRejected
+        maxRejected = cost_allowance(rejected, margin, slack)
+        ok = stepped and its <= maxIter and rej <= maxRejected
         self.failed += not ok
         print('  %s cost of %-52s %d iterations (budget %d, allowed %d), '
-              '%d rejected (budget %d, allowed %d), %d steps'
-              % ('ok  ' if ok else 'FAIL', what, cost['iterations'],
-                 iterations, maxIter, cost['rejected'], rejected, maxRejected,
-                 cost['steps']))
-        if ok and cost['iterations'] < 0.5*iterations:
+              '%d rejected (budget %d, allowed %d), %s'
+              % ('ok  ' if ok else 'FAIL', what, its, iterations, maxIter,
+                 rej, rejected, maxRejected,
+                 '%d steps' % costs[0]['steps'] if len(logs) == 1
+                 else '%d runs%s' % (len(logs), '' if stepped
+                                     else ' (a run without steps)')))
+        if ok and its < 0.5*iterations:
             print('       note: under half its budget: lower the budget to '
                   'the new count if the saving is understood')
         return ok
@@ -231,7 +248,9 @@ class Check:
 #   python3 hearthcheck.py budget NAME COSTBUDGET SCRATCH
 # checks every run listed in the test's costBudget file, lines of
 #   <log, relative to the test's scratch folder>  <iterations>  <rejected>
-# ('#' starts a comment).
+# or, for an aggregate budget (Check.cost_sum), one line
+#   sum  <iterations>  <rejected>  <margin>
+# and the logs it sums, one a line (<log> alone); '#' starts a comment.
 
 
 def check_budget_file(name, budget_file, scratch):
@@ -239,9 +258,14 @@ def check_budget_file(name, budget_file, scratch):
     with open(budget_file) as f:
         rows = [line.split('#')[0].split() for line in f]
     rows = [r for r in rows if r]
+    sums = [r for r in rows if r[0] == 'sum']
+    summed = [r[0] for r in rows if len(r) == 1]
     for r in rows:
+        if r[0] == 'sum' or len(r) == 1:
+            continue
         if len(r) != 3:
-            c.true('%s: a line is <log> <iterations> <rejected>'
+            c.true('%s: a line is <log> <iterations> <rejected>, <log> or'
+                   ' sum <iterations> <rejected> <margin>'
                    % budget_file, False, ' '.join(r))
             continue
         log = os.path.join(scratch, r[0])
@@ -249,6 +273,20 @@ def check_budget_file(name, budget_file, scratch):
             c.true('run of %s found' % r[0], False, 'no %s' % log)
             continue
         c.cost(r[0], log, int(r[1]), int(r[2]))
+    if sums or summed:
+        if not c.true('%s: one line sum <iterations> <rejected> <margin>'
+                      ' and the logs it sums' % budget_file,
+                      len(sums) == 1 and len(sums[0]) == 4 and summed,
+                      '%d sum lines, %d logs' % (len(sums), len(summed))):
+            c.done()
+        logs = [os.path.join(scratch, r) for r in summed]
+        missing = [r for r, log in zip(summed, logs)
+                   if not os.path.isfile(log)]
+        if missing:
+            c.true('runs of the sum found', False, 'no ' + ', '.join(missing))
+        else:
+            c.cost_sum('the sum of %d runs' % len(logs), logs,
+                       int(sums[0][1]), int(sums[0][2]), float(sums[0][3]))
     c.true('the budget lists runs', bool(rows), budget_file)
     c.done()
 

@@ -540,15 +540,16 @@ bool Foam::pendularNewton::valid
     // with a positive gas density rho_g = rho_w + M_a p_a/(R T) (the
     // closure's omega = rho_w/rho_g has its pole at rho_g = 0; below it
     // the gas holds less than no air: pendularState::closure). With
-    // saturatedZone, whose iterates are not projected onto p_a >= 0
-    // (airProjection), Newton passed through such iterates and went on
-    // (issue 14). Ending the sub-step there left tutorials/
+    // saturatedZone, whose iterates were not projected onto p_a >= 0
+    // before 2026-12-04 (airProjection), Newton passed through such
+    // iterates and went on (issue 14). Ending the sub-step there left tutorials/
     // wetHearthCoupled's four saturated-zone runs on 200 cells (written
     // every step) as they were: the same sub-steps and rejections, the
     // fields bit for bit, 11163 -> 11152 Newton iterations (those
     // sub-steps failed later anyway, mostly with an oscillating phase).
-    // Without saturatedZone the projection keeps rho_g > 0 after an
-    // update (model A); the first iterate is checked too. (Test only:
+    // The projection keeps rho_g > 0 after an update (model A) in the
+    // cells it projects (with saturatedZone not those at alpha_l = 1,
+    // checked here); the first iterate is checked too. (Test only:
     // pendularNewtonNoAirProjection 2 leaves rho_g <= 0 to airLost; every
     // rank sees the same switch)
     const bool rhoGChecked = nanInjection::pendularNewtonNoAirProjection < 2;
@@ -586,16 +587,14 @@ Foam::label Foam::pendularNewton::airProjection
         // (test only: every rank sees the same switch)
         return 0;
     }
-    if (res.medium().saturatedZone())
-    {
-        // Not with saturatedZone (issue 14, measured 2026-12-04; the
-        // measurements in README.md, Nonlinear engine): there the cells
-        // with p_a < 0 in Newton's iterates are boiling cells of nearly
-        // pure vapour, the accepted roots had p_a >= 0 without a
-        // projection in every run measured (airLost refuses any other),
-        // and projecting moved the rejected sub-steps without a trend
-        return 0;
-    }
+    // With saturatedZone (since 2026-12-04, issue 14; README.md,
+    // pendularFoam, "Air vanishing from the gas") only the two-phase cells
+    // with gas room, alpha_l < 1: a bothPhases cell at alpha_l = 1 (pores
+    // full, about to turn liquidOnly, held by the switching band) has no
+    // gas and no air to project; its p_g carries the liquid's pressure.
+    // (Without saturatedZone such a cell is not a root either: fullPores;
+    // its iterates are projected as before, bit for bit)
+    const bool gasRoomOnly = res.medium().saturatedZone();
     for (label c = 0; c < x.size()/3; ++c)
     {
         // (a cell outside the model's range is valid's: its state is not
@@ -608,8 +607,9 @@ Foam::label Foam::pendularNewton::airProjection
         {
             continue;
         }
-        const scalar pa = res.state(c, &x[3*c]).pa;
-        if (!(pa < 0))
+        const pendularResidual::cellState& s = res.state(c, &x[3*c]);
+        const scalar pa = s.pa;
+        if (!(pa < 0) || (gasRoomOnly && s.alpha >= 1))
         {
             continue;
         }
