@@ -85,9 +85,16 @@ public:
     ) const
     {
         pendularResidual::faceFlux(facei, xOwn, xNei, F);
-        if (term_ == term::enthalpy)
+        if
+        (
+            term_ == term::enthalpy
+         && facei < mesh().nInternalFaces()
+        )
         {
-            // conduction only: the enthalpy of the gas left out
+            // conduction only: the enthalpy of the gas left out (internal
+            // faces: a face of a cyclic or processor patch has no
+            // faceNeighbour, and its cell across is not a local cell; the
+            // internal faces alone make the residual wrong)
             const scalar dc = mesh().nonOrthDeltaCoeffs()[facei];
             const scalar w = mesh().weights()[facei];
             const cellState o = state(mesh().faceOwner()[facei], xOwn);
