@@ -1042,8 +1042,10 @@ void Foam::blockSystem::checkBlock
 
 Foam::label Foam::blockSystem::slot(const label celli, const label col) const
 {
-    const label* first = &cols_[rowStart_[celli]];
-    const label* last = &cols_[rowStart_[celli + 1]];
+    // (pointers, not &cols_[i]: the last row ends at cols_.size(), which
+    // UList's operator[] refuses under FULLDEBUG)
+    const label* first = cols_.cdata() + rowStart_[celli];
+    const label* last = cols_.cdata() + rowStart_[celli + 1];
     const label* it = std::lower_bound(first, last, col);
     if (it == last || *it != col)
     {
