@@ -95,7 +95,7 @@ def read_air_guards(log):
     more, chord steps sent back by their air projection and taken after a
     projection below pTol, cells with p_a < 0 in converged solves."""
     pattern = re.compile(
-        r'^Air guards of the Newton engine since the start: (\d+) sub-steps'
+        r'^Air guards of the Newton engine since the start(?: of this run)?: (\d+) sub-steps'
         r' refused for less than no air \(airLost\), (\d+) cell projections'
         r' onto p_a >= 0 by pTol or more; chord steps: (\d+) sent back by'
         r' their air projection, (\d+) taken with cells projected by less'
