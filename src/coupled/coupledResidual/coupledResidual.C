@@ -303,12 +303,12 @@ Foam::coupledResidual::coupledResidual
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
         const label start = pp.start() - mesh.nInternalFaces();
+        const bool empty = isA<emptyPolyPatch>(pp);
+        const bool coupled = pp.coupled();
         forAll(pp, i)
         {
             bFaceVisit_[start + i] =
-                isA<emptyPolyPatch>(pp) ? -2
-              : pp.coupled() ? start + i
-              : -1;
+                empty ? -2 : coupled ? start + i : -1;
         }
     }
     if
