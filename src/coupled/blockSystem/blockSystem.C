@@ -44,16 +44,6 @@ Foam::blockSystem::solverTypeNames
     { solverType::gmres, "gmres" },
     { solverType::fgmres, "fgmres" },
     { solverType::bcgs, "bcgs" },
-    { solverType::preonly, "preonly" },
-});
-
-const Foam::Enum<Foam::blockSystem::orderingType>
-Foam::blockSystem::orderingTypeNames
-({
-    { orderingType::natural, "natural" },
-    { orderingType::nd, "nd" },
-    { orderingType::rcm, "rcm" },
-    { orderingType::qmd, "qmd" },
 });
 
 const Foam::Enum<Foam::blockSystem::preconditionerType>
@@ -361,7 +351,7 @@ void Foam::blockSystem::createSolver
             "matrix", "solver", "preconditioner", "subPreconditioner",
             "iluLevels", "asmOverlap", "tolerance", "relTol", "maxIter",
             "gmresRestart", "petscOptions", "forcing", "forcingMax",
-            "cprField", "cprDecoupling", "cprAmg", "factorOrdering"
+            "cprField", "cprDecoupling", "cprAmg"
         },
         "block solver settings (blockSystem)"
     );
@@ -379,41 +369,6 @@ void Foam::blockSystem::createSolver
             dict, "preconditioner", preconditionerTypeNames,
             preconditionerType::bjacobi
         );
-    // preonly: one application of the preconditioner, a solve only when
-    // it is exact (lu)
-    if (solver == solverType::preonly && pc != preconditionerType::lu)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'solver' = preonly in " << dict.name() << " with"
-            << " preconditioner " << preconditionerTypeNames[pc] << ": one"
-            << " application of an inexact preconditioner is no solve;"
-            << " valid: solver preonly with preconditioner lu, or solver "
-            << flatOutput
-               (
-                   wordList({"gmres", "fgmres", "bcgs"})
-               )
-            << " with any" << exit(FatalIOError);
-    }
-    // The fill-reducing ordering of the LU (serial: PETSc's own
-    // factorisation; MUMPS orders its own in parallel)
-    if (dict.found("factorOrdering"))
-    {
-        if (pc != preconditionerType::lu || Pstream::parRun())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Keyword 'factorOrdering' in " << dict.name() << " with"
-                << " preconditioner " << preconditionerTypeNames[pc]
-                << " on " << Pstream::nProcs() << " rank(s): it orders the"
-                << " serial LU of preconditioner lu only (MUMPS, the LU in"
-                << " parallel, orders its own); valid: remove it, or give"
-                << " preconditioner lu in a serial run"
-                << exit(FatalIOError);
-        }
-        checkedRead::getChoice
-        (
-            dict, "factorOrdering", orderingTypeNames, orderingType::nd
-        );
-    }
     const subPreconditionerType subPc =
         checkedRead::getChoice
         (
@@ -444,7 +399,6 @@ void Foam::blockSystem::createSolver
     const label maxIter =
         checkedRead::getLabelOrDefault(dict, "maxIter", 1000, 1);
     relTol_ = relTol;
-    solverType_ = solver;
     forcing_ =
         checkedRead::getChoice
         (
@@ -463,18 +417,6 @@ void Foam::blockSystem::createSolver
             << " none: it bounds the forcing term of forcing"
             << " eisenstatWalker only; valid: remove it, or give forcing"
             << " eisenstatWalker"
-            << exit(FatalIOError);
-    }
-    if
-    (
-        forcing_ == forcingType::eisenstatWalker
-     && solver == solverType::preonly
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword 'forcing' = eisenstatWalker in " << dict.name()
-            << " with solver preonly: a direct solve has no tolerance to"
-            << " force; valid: forcing none, or a Krylov solver"
             << exit(FatalIOError);
     }
     if (forcing_ == forcingType::eisenstatWalker && forcingMax_ < relTol)
@@ -635,22 +577,10 @@ void Foam::blockSystem::createSolver
     }
 
     setDefaultOption(prefix, "ksp_type", solverTypeNames[solver]);
-    if (solver == solverType::preonly)
-    {
-        // x = M^-1 b from x = 0 (the initial guess is not used), no norm
-        setDefaultOption(prefix, "ksp_norm_type", "none");
-        setDefaultOption(prefix, "ksp_initial_guess_nonzero", "false");
-    }
-    else
-    {
-        setDefaultOption
-        (
-            prefix, "ksp_gmres_restart", std::to_string(restart)
-        );
-        setDefaultOption(prefix, "ksp_pc_side", "right");
-        setDefaultOption(prefix, "ksp_norm_type", "unpreconditioned");
-        setDefaultOption(prefix, "ksp_initial_guess_nonzero", "true");
-    }
+    setDefaultOption(prefix, "ksp_gmres_restart", std::to_string(restart));
+    setDefaultOption(prefix, "ksp_pc_side", "right");
+    setDefaultOption(prefix, "ksp_norm_type", "unpreconditioned");
+    setDefaultOption(prefix, "ksp_initial_guess_nonzero", "true");
 
     const std::string sub(subPreconditionerTypeNames[subPc]);
     switch (pc)
@@ -686,14 +616,6 @@ void Foam::blockSystem::createSolver
                 setDefaultOption
                 (
                     prefix, "pc_factor_mat_solver_type", "mumps"
-                );
-            }
-            if (dict.found("factorOrdering"))
-            {
-                setDefaultOption
-                (
-                    prefix, "pc_factor_mat_ordering_type",
-                    dict.get<word>("factorOrdering")
                 );
             }
             break;
@@ -1159,29 +1081,6 @@ inline void Foam::blockSystem::addBlock
 
 // * * * * * * * * * * * * * * * Static Functions * * * * * * * * * * * * //
 
-Foam::label Foam::blockSystem::bandwidth(const polyMesh& mesh)
-{
-    const label nGlobal = returnReduce(mesh.nCells(), sumOp<label>());
-    bool coupled = Pstream::parRun();
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        coupled = coupled || pp.coupled();
-    }
-    if (coupled)
-    {
-        return nGlobal;
-    }
-    const labelList& own = mesh.faceOwner();
-    const labelList& nei = mesh.faceNeighbour();
-    label band = 0;
-    for (label facei = 0; facei < mesh.nInternalFaces(); ++facei)
-    {
-        band = max(band, mag(nei[facei] - own[facei]));
-    }
-    return band;
-}
-
-
 bool Foam::blockSystem::allFinite(const UList<scalar>& values)
 {
     bool finite = true;
@@ -1223,7 +1122,6 @@ Foam::blockSystem::blockSystem
     cpr_(),
     failure_(),
     relTol_(0),
-    solverType_(solverType::gmres),
     forcing_(forcingType::none),
     forcingMax_(0.01),
     forcingNorm_(0),
@@ -1398,32 +1296,11 @@ Foam::solverPerformance Foam::blockSystem::solve
     // system to solve (the solution is left as given)
     const bool finiteSource = allFinite(source_);
 
-    // Initial residual |b - A x0|: |b| from x0 = 0 on every rank (the
-    // Newton engines' steps; no product: the products were 2 % of
-    // bench/pendularNewton's column500_defaults' instructions, callgrind)
-    // and with solver preonly (which solves from x0 = 0)
-    bool zeroGuess = true;
-    for (const scalar v : x)
-    {
-        if (v != 0)
-        {
-            zeroGuess = false;
-            break;
-        }
-    }
-    reduce(zeroGuess, andOp<bool>());
-    scalar initialResidual = 0;
-    if (zeroGuess || solverType_ == solverType::preonly)
-    {
-        initialResidual = Foam::sqrt(gSumSqr(source_));
-    }
-    else
-    {
-        scalarField r;
-        multiply(x, r);
-        r = source_ - r;
-        initialResidual = Foam::sqrt(gSumSqr(r));
-    }
+    // Initial residual |b - A x0|
+    scalarField r;
+    multiply(x, r);
+    r = source_ - r;
+    const scalar initialResidual = Foam::sqrt(gSumSqr(r));
 
     PetscErrorCode ierr = 0;
     if (finiteSource && forcing_ == forcingType::eisenstatWalker)
