@@ -8,6 +8,7 @@
 
 #include <petscsys.h>
 #include <string>
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * //
 
@@ -73,6 +74,12 @@ Foam::petscSession::petscSession()
         {
             PETSC_COMM_WORLD =
                 Pstream::parRun() ? MPI_COMM_WORLD : PETSC_COMM_SELF;
+        }
+        else
+        {
+            // Open MPI's singleton without its daemon (see Description;
+            // overwrite 0: a value in the environment wins)
+            ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
         }
         // OpenFOAM's signal handlers stay (its stack trace on SIGSEGV,
         // its floating-point traps): PETSc installs none
