@@ -64,6 +64,20 @@ void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
     for (const entry& e : *optPtr)
     {
         const word& key = e.keyword();
+        if (key == "pendularNewtonNoAirProjection")
+        {
+            const label value = optPtr->get<label>(key);
+            if (value < 0 || value > 2)
+            {
+                FatalIOErrorInFunction(*optPtr)
+                    << "OptimisationSwitch " << key << " = " << value
+                    << " in " << controlDict.name() << ": valid 0 (the air"
+                    << " projection on), 1 (pendularNewton's iterates not"
+                    << " projected onto non-negative air) or 2 (nor refused"
+                    << " for a gas density <= 0; test only)"
+                    << exit(FatalIOError);
+            }
+        }
         if
         (
             (
