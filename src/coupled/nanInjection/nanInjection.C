@@ -64,20 +64,6 @@ void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
     for (const entry& e : *optPtr)
     {
         const word& key = e.keyword();
-        if (key == "pendularNewtonNoAirProjection")
-        {
-            const label value = optPtr->get<label>(key);
-            if (value < 0 || value > 2)
-            {
-                FatalIOErrorInFunction(*optPtr)
-                    << "OptimisationSwitch " << key << " = " << value
-                    << " in " << controlDict.name() << ": valid 0 (the air"
-                    << " projection on), 1 (pendularNewton's iterates not"
-                    << " projected onto non-negative air) or 2 (nor refused"
-                    << " for a gas density <= 0; test only)"
-                    << exit(FatalIOError);
-            }
-        }
         if
         (
             (
@@ -95,6 +81,34 @@ void Foam::nanInjection::checkSwitchNames(const dictionary& controlDict)
                 << " (case-sensitive)" << exit(FatalIOError);
         }
     }
+}
+
+
+void Foam::nanInjection::checkNoAirProjection(const dictionary& controlDict)
+{
+    const int value = pendularNewtonNoAirProjection;
+    if (value >= 0 && value <= 2)
+    {
+        return;
+    }
+    const dictionary* optPtr =
+        controlDict.findDict("OptimisationSwitches", keyType::LITERAL);
+    const word key("pendularNewtonNoAirProjection");
+    const char* valid =
+        ": valid 0 (the air projection on), 1 (pendularNewton's iterates not"
+        " projected onto non-negative air) or 2 (nor refused for a gas"
+        " density <= 0; test only)";
+    // The value in effect is controlDict's unless -opt-switch overrode it
+    if (optPtr && optPtr->found(key) && optPtr->get<label>(key) == value)
+    {
+        FatalIOErrorInFunction(*optPtr)
+            << "OptimisationSwitch " << key << " = " << value << " in "
+            << controlDict.name() << valid << exit(FatalIOError);
+    }
+    FatalErrorInFunction
+        << "OptimisationSwitch " << key << " = " << value << " (from"
+        << " -opt-switch or the OptimisationSwitches of etc/controlDict)"
+        << valid << exit(FatalError);
 }
 
 

@@ -61,20 +61,7 @@ Foam::pendularNewton::pendularNewton
     (
         "pendularNewton: the water residual of a local water solve (master)"
     );
-    if
-    (
-        nanInjection::pendularNewtonNoAirProjection < 0
-     || nanInjection::pendularNewtonNoAirProjection > 2
-    )
-    {
-        FatalErrorInFunction
-            << "OptimisationSwitch pendularNewtonNoAirProjection = "
-            << nanInjection::pendularNewtonNoAirProjection
-            << " (a test switch, system/controlDict OptimisationSwitches or"
-            << " -opt-switch): valid 0 (the projection on), 1 (iterates not"
-            << " projected onto non-negative air) or 2 (nor refused for a"
-            << " gas density <= 0)" << exit(FatalError);
-    }
+    nanInjection::checkNoAirProjection(mesh.time().controlDict());
     if (nanInjection::pendularNewtonNoAirProjection)
     {
         Info<< "OptimisationSwitch pendularNewtonNoAirProjection = "
