@@ -351,7 +351,7 @@ void Foam::blockSystem::createSolver
             "matrix", "solver", "preconditioner", "subPreconditioner",
             "iluLevels", "asmOverlap", "tolerance", "relTol", "maxIter",
             "gmresRestart", "petscOptions", "forcing", "forcingMax",
-            "cprField", "cprDecoupling", "cprAmg"
+            "diagonalScale", "cprField", "cprDecoupling", "cprAmg"
         },
         "block solver settings (blockSystem)"
     );
@@ -439,6 +439,21 @@ void Foam::blockSystem::createSolver
         FatalIOErrorInFunction(dict)
             << "preconditioner fieldsplit needs 'matrix aij;' (PETSc"
             << " extracts the fields of aij matrices only); matrix is baij"
+            << exit(FatalIOError);
+    }
+
+    // Symmetric diagonal scaling of the solves (see Description)
+    const bool diagonalScale =
+        dict.getOrDefault<bool>("diagonalScale", false);
+    if (diagonalScale && pc == preconditionerType::cpr)
+    {
+        // The pressure stage's decoupling weights are those of the
+        // unscaled blocks: not validated on the scaled system
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'diagonalScale' = true in " << dict.name()
+            << " with preconditioner cpr: its pressure stage is not"
+            << " validated on a diagonally scaled system; valid: remove"
+            << " diagonalScale (or false), or another preconditioner"
             << exit(FatalIOError);
     }
 
@@ -581,6 +596,13 @@ void Foam::blockSystem::createSolver
     setDefaultOption(prefix, "ksp_pc_side", "right");
     setDefaultOption(prefix, "ksp_norm_type", "unpreconditioned");
     setDefaultOption(prefix, "ksp_initial_guess_nonzero", "true");
+    if (diagonalScale)
+    {
+        // (fix: A and b unscaled after each solve, as the Newton engine's
+        // chord steps solve again with the same A)
+        setDefaultOption(prefix, "ksp_diagonal_scale", "true");
+        setDefaultOption(prefix, "ksp_diagonal_scale_fix", "true");
+    }
 
     const std::string sub(subPreconditionerTypeNames[subPc]);
     switch (pc)
