@@ -595,6 +595,20 @@ Foam::label Foam::pendularNewton::airProjection
     // gas and no air to project; its p_g carries the liquid's pressure.
     // (Without saturatedZone such a cell is not a root either: fullPores;
     // its iterates are projected as before, bit for bit)
+    // valid()'s rho_g check, airLost and pendularFoam's count of cells
+    // with p_a < 0 still take such a cell as one with gas. Whether that
+    // ever acts was measured (2026-12-04, a debug counter in a scratch
+    // build, not kept): on tutorials/wetHearthCoupled's four
+    // saturated-zone runs on 100 and 200 cells (with the projection and
+    // with pendularNewtonNoAirProjection 1), its saturated pit written
+    // every step (tests/pendularGasWithoutAir) and the 22 runs of
+    // tests/pendularSaturatedDrying, no such cell had rho_g <= 0 in an
+    // iterate, none was counted or refused by airLost, and no written
+    // two-phase cell was at alpha_l = 1. The projection skipped one
+    // cell once (the flat hearth at K = 1e-16 m2, 200 cells, t = 15379 s:
+    // p_a = -21.1 kPa, rho_g = 9.4 kg/m3), in an iterate refused for a
+    // neighbour's T < 248.15 K. So the four places are left as they are
+    // (README.md, pendularFoam, "Air vanishing from the gas").
     const bool gasRoomOnly = res.medium().saturatedZone();
     for (label c = 0; c < x.size()/3; ++c)
     {
