@@ -893,17 +893,22 @@ Foam::label Foam::pendularNewton::frontFirstIterate
     }
 
     // The chains: visit(k, yk) with yk[3c], yk[3c + 1] the q and the last
-    // q of the cell k hops upstream of c (-1: none), k = 0..K (Jacobi
-    // sweeps, exchanged across the coupled patches at every sweep:
-    // independent of the decomposition; no (K + 1) values per cell kept)
+    // q of the cell k hops upstream of c (-1: none), k = 0..kMax <= K
+    // (Jacobi sweeps, exchanged across the coupled patches at every sweep:
+    // independent of the decomposition; no (K + 1) values per cell kept;
+    // kMax the same on every rank)
     auto chains =
-        [&](const std::function<void(label, const scalarField&)>& visit)
+        [&]
+        (
+            const label kMax,
+            const std::function<void(label, const scalarField&)>& visit
+        )
     {
         scalarField yk(y), yNext(3*nCells);
-        for (label k = 0; k <= K; ++k)
+        for (label k = 0; k <= kMax; ++k)
         {
             visit(k, yk);
-            if (k == K)
+            if (k == kMax)
             {
                 break;
             }
@@ -936,6 +941,7 @@ Foam::label Foam::pendularNewton::frontFirstIterate
     };
     chains
     (
+        K,
         [&](const label k, const scalarField& yk)
         {
             for (label c = 0; c < nCells; ++c)
@@ -968,6 +974,10 @@ Foam::label Foam::pendularNewton::frontFirstIterate
     // log q between hops k0 and k0 + 1 (-1: the cell is left alone)
     labelList k0(nCells, -1);
     scalarField f(nCells, Zero), q0(nCells, -1), q1(nCells, -1);
+    // (the chains are followed to the largest k0 + 1 only: on
+    // bench/pendularNewton's column500_defaults 51 sweeps before, the
+    // results bit for bit the same)
+    label k0Max = -1;
     for (label c = 0; c < nCells; ++c)
     {
         if (y[3*c] < 0 || pNow[c] < 0 || pLast[c] < 0)
@@ -979,10 +989,13 @@ Foam::label Foam::pendularNewton::frontFirstIterate
         {
             k0[c] = label(S);
             f[c] = S - k0[c];
+            k0Max = max(k0Max, k0[c]);
         }
     }
+    reduce(k0Max, maxOp<label>());
     chains
     (
+        k0Max < 0 ? -1 : k0Max + 1,
         [&](const label k, const scalarField& yk)
         {
             for (label c = 0; c < nCells; ++c)

@@ -1039,36 +1039,31 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
 {
     FixedList<cacheEntry, nCache>& entries = cache_[celli];
     const label phase = phase_[celli];
-    for (const cacheEntry& e : entries)
-    {
-        if
-        (
-            e.x[0] == x[0] && e.x[1] == x[1] && e.x[2] == x[2]
-         && e.phase == phase
-        )
-        {
-            return e.s;
-        }
-    }
     // A state at the same T and W (e.g. the Jacobian's step of p_g) has
     // the same liquid fraction and vapour: only the gas closure is new
     // (two-phase cells: a liquidOnly state is cheap). Not with model B,
     // whose relaxed liquid fraction depends on p_g too (the rate law's
     // rho_g and p_g; its other arguments, alphaOld_ and dt_, are fixed
-    // for the residual's life: the key (x, phase) is complete)
+    // for the residual's life: the key (x, phase) is complete). The first
+    // such entry, found in the same pass as the state itself
     const cellState* same = nullptr;
     for (const cacheEntry& e : entries)
     {
-        if
-        (
-            phase == bothPhases && e.phase == bothPhases
-         && e.x[0] == x[0] && e.x[2] == x[2]
-         && !medium_.nonEquilibrium()
-        )
+        if (e.x[0] == x[0] && e.x[2] == x[2] && e.phase == phase)
         {
-            same = &e.s;
-            break;
+            if (e.x[1] == x[1])
+            {
+                return e.s;
+            }
+            if (!same)
+            {
+                same = &e.s;
+            }
         }
+    }
+    if (same && (phase != bothPhases || medium_.nonEquilibrium()))
+    {
+        same = nullptr;
     }
     label& next = cacheNext_[celli];
     cacheEntry& e = entries[next];

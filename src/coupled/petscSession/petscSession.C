@@ -9,12 +9,36 @@
 #include <petscsys.h>
 #include <string>
 #include <cstdlib>
+#include <vector>
 
 // * * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * //
 
 namespace
 {
     bool sessionAlive = false;
+
+    //- Open MPI's singleton (a serial run: MPI started by PETSc, a world
+    //  of one rank that talks only to itself): no daemon (orted), the
+    //  only transport it uses (self: no tcp sockets, no shared-memory
+    //  segment of vader), and the components it selects anyway (ob1, the
+    //  state and error manager of an application process, shmem mmap);
+    //  the reachability component by weights, not netlink's (used by the
+    //  tcp transport only); hwloc without its GPU, PCI and XML plugins
+    //  (libxml2 with ICU, X11's NV-CONTROL, libpciaccess)
+    const char* const singletonDefaults[][2] =
+    {
+        {"OMPI_MCA_ess_singleton_isolated", "1"},
+        {"OMPI_MCA_btl", "self"},
+        {"OMPI_MCA_pml", "ob1"},
+        {"OMPI_MCA_state", "app"},
+        {"OMPI_MCA_errmgr", "default_app"},
+        {"OMPI_MCA_reachable", "weighted"},
+        {"OMPI_MCA_shmem", "mmap"},
+        {
+            "HWLOC_PLUGINS_BLACKLIST",
+            "hwloc_gl,hwloc_opencl,hwloc_pci,hwloc_xml_libxml"
+        }
+    };
 
     //- PETSc's message of the last error, with where it was raised
     std::string lastPetscError;
@@ -59,6 +83,8 @@ Foam::petscSession::petscSession()
             << " in main" << exit(FatalError);
     }
 
+    // The variables set here for Open MPI's singleton
+    std::vector<const char*> setHere;
     PetscBool already = PETSC_FALSE;
     check(PetscInitialized(&already), "PetscInitialized");
     if (!already)
@@ -77,9 +103,18 @@ Foam::petscSession::petscSession()
         }
         else
         {
-            // Open MPI's singleton without its daemon (see Description;
-            // overwrite 0: a value in the environment wins)
-            ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+            // Open MPI's singleton without its daemon and without the
+            // components a world of one rank does not use (see
+            // Description); only where the environment sets none (a value
+            // there wins)
+            for (const auto& var : singletonDefaults)
+            {
+                if (!::getenv(var[0]))
+                {
+                    ::setenv(var[0], var[1], 1);
+                    setHere.push_back(var[0]);
+                }
+            }
         }
         // OpenFOAM's signal handlers stay (its stack trace on SIGSEGV,
         // its floating-point traps): PETSc installs none
@@ -88,11 +123,14 @@ Foam::petscSession::petscSession()
             PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr),
             "PetscOptionsSetValue"
         );
-        check
-        (
-            PetscInitializeNoArguments(),
-            "PetscInitializeNoArguments"
-        );
+        const int ierr = PetscInitializeNoArguments();
+        // (read by MPI_Init only: out of the environment again, which a
+        // process this one starts, e.g. an mpirun, inherits)
+        for (const char* name : setHere)
+        {
+            ::unsetenv(name);
+        }
+        check(ierr, "PetscInitializeNoArguments");
         initialised_ = true;
     }
     check
