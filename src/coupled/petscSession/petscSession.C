@@ -103,6 +103,24 @@ Foam::petscSession::petscSession()
         }
         else
         {
+            // A serial run started by a launcher (mpirun -np N without
+            // -parallel): PETSc's MPI_Init would join the N copies of the
+            // serial run in one world (and the singleton's settings below
+            // would not let them talk): refused
+            for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+            {
+                const char* n = ::getenv(var);
+                if (n && std::atoi(n) > 1)
+                {
+                    FatalErrorInFunction
+                        << "Started by mpirun on " << n << " ranks ("
+                        << var << ") without -parallel: each rank would"
+                        << " run the whole case. Run 'mpirun -np " << n
+                        << " <solver> -parallel' on a decomposed case"
+                        << " (decomposePar), or the solver without mpirun"
+                        << exit(FatalError);
+                }
+            }
             // Open MPI's singleton without its daemon and without the
             // components a world of one rank does not use (see
             // Description); only where the environment sets none (a value
