@@ -1506,10 +1506,13 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
                 << " short of their tolerance (the last at "
                 << perf.finalResidual() << " after " << perf.nIterations()
                 << " iterations): inexact steps slow Newton down. Set a"
-                << " stronger preconditioner in system/fvSolution, e.g."
+                << " stronger linear solver in system/fvSolution, e.g."
                 << " coupled { preconditioner lu; } (MUMPS on a decomposed"
                 << " mesh, where block Jacobi loses the coupling across"
-                << " the processor boundaries); said once" << endl;
+                << " the processor boundaries), or coupled { diagonalScale"
+                << " true; } (the balances' rows of one scale for relTol; not"
+                << " with cpr);"
+                << " said once" << endl;
         }
 
         FixedList<scalar, 3> u(scalar(0));
