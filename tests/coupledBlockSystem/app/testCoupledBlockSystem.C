@@ -183,6 +183,9 @@ void diagonalScaleChecks(const fvMesh& mesh, const dictionary& props)
         return;
     }
     section("1b. diagonalScale: the scaling of the matrix solved");
+    // (a name of its own: blockSystem's options stay in PETSc's database
+    // under the prefix of the dictionary's name, for the later systems)
+    dict.name() = mesh.solutionDict().name() + ".coupledScaled";
     dict.set("diagonalScale", true);
     dict.set("relTol", 1e-6);
     dictionary props1(props);
