@@ -98,7 +98,8 @@ void Foam::nanInjection::checkNoAirProjection(const dictionary& controlDict)
         ": valid 0 (the air projection on), 1 (pendularNewton's iterates not"
         " projected onto non-negative air) or 2 (nor refused for a gas"
         " density <= 0; test only)";
-    // The value in effect is controlDict's unless -opt-switch overrode it
+    // The value in effect: the case controlDict's when it sets one (read
+    // with the Time, after -opt-switch, v1912), -opt-switch's otherwise
     if (optPtr && optPtr->found(key) && optPtr->get<label>(key) == value)
     {
         FatalIOErrorInFunction(*optPtr)
