@@ -351,7 +351,8 @@ void Foam::blockSystem::createSolver
             "matrix", "solver", "preconditioner", "subPreconditioner",
             "iluLevels", "asmOverlap", "tolerance", "relTol", "maxIter",
             "gmresRestart", "petscOptions", "forcing", "forcingMax",
-            "diagonalScale", "cprField", "cprDecoupling", "cprAmg"
+            "diagonalScale", "cprField", "cprDecoupling", "cprAmg",
+            "cprRebuildFactor"
         },
         "block solver settings (blockSystem)"
     );
@@ -459,7 +460,10 @@ void Foam::blockSystem::createSolver
 
     // The CPR's settings (its second stage: block Jacobi with
     // subPreconditioner and iluLevels)
-    const wordList cprKeys({"cprField", "cprDecoupling", "cprAmg"});
+    const wordList cprKeys
+    ({
+        "cprField", "cprDecoupling", "cprAmg", "cprRebuildFactor"
+    });
     if (pc != preconditionerType::cpr)
     {
         for (const word& key : cprKeys)
@@ -518,12 +522,32 @@ void Foam::blockSystem::createSolver
                 << " AMG (" << why.c_str() << "); valid choices here: "
                 << flatOutput(have) << exit(FatalIOError);
         }
+        // The rebuild criterion of the AMG hierarchy (cprPressureStage.H):
+        // 0 (a new one every sub-step) or a factor in [1, 100]
+        const scalar rebuildFactor =
+            checkedRead::getOrDefault
+            (
+                dict, "cprRebuildFactor", dimless, cprRebuildFactorDefault,
+                checkedRead::closed(0, 100)
+            ).value();
+        if (rebuildFactor > 0 && rebuildFactor < 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword 'cprRebuildFactor' = " << rebuildFactor
+                << " in " << dict.name() << ": the factor of the GMRES"
+                << " iterations per decade over those in the sub-step of"
+                << " the last build of the AMG hierarchy at which it is"
+                << " built anew; valid:"
+                << " 0 (a new hierarchy every sub-step) or [1, 100]"
+                << exit(FatalIOError);
+        }
         cprAmg = cprPressureStage::amgTypeNames[amg];
         cpr_.reset
         (
             new cprPressureStage
             (
-                nBlock_, field, decoupling, dict.dictName() + "_cpr_"
+                nBlock_, field, decoupling, dict.dictName() + "_cpr_",
+                rebuildFactor
             )
         );
     }
@@ -1339,6 +1363,12 @@ Foam::solverPerformance Foam::blockSystem::solve
     // system to solve (the solution is left as given)
     const bool finiteSource = allFinite(source_);
 
+    // (cpr: the initial guess and forcing state, for a second solve on a
+    // new AMG hierarchy, below)
+    const scalarField x0(cpr_ ? x : scalarField());
+    const scalar forcingNorm0 = forcingNorm_;
+    const scalar forcingEta0 = forcingEta_;
+
     // Initial residual |b - A x0|
     scalarField r;
     multiply(x, r);
@@ -1513,6 +1543,43 @@ Foam::solverPerformance Foam::blockSystem::solve
     }
 
     const bool converged = reason > 0 && finite;
+
+    // cpr: the rebuild criterion of its AMG hierarchy (cprPressureStage.H;
+    // the iterations and norms are global: every rank decides alike). A
+    // solve stopped short on a hierarchy built for an earlier matrix is
+    // solved again at once on a new one (the matrix assembled again: its
+    // state increased, PETSc sets the preconditioner up again)
+    if (cpr_ && failure_.empty())
+    {
+        const std::string why =
+            cpr_->solved(nIter, initialResidual, finalResidual, converged);
+        if (!why.empty())
+        {
+            Info<< "blockSystem " << solverName_ << ": cpr's AMG hierarchy"
+                << " built anew (build " << cpr_->nBuilds() + 1 << "): "
+                << why.c_str()
+                << (converged ? " (at the next set-up)" : "; solved again")
+                << endl;
+            if (!converged)
+            {
+                x = x0;
+                forcingNorm_ = forcingNorm0;
+                forcingEta_ = forcingEta0;
+                // (an assembly increases the matrix's state)
+                petscSession::check
+                (
+                    MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY),
+                    "MatAssemblyBegin"
+                );
+                petscSession::check
+                (
+                    MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd"
+                );
+                return solve(x, failOnDivergence);
+            }
+        }
+    }
+
     if (!converged && failOnDivergence)
     {
         PetscReal rtol, abstol, dtol;

@@ -172,16 +172,48 @@ int Foam::cprPressureStage::setUp(PC pc)
     cprPressureStage& s = *static_cast<cprPressureStage*>(ctx);
     Mat A;
     PetscCall(PCGetOperators(pc, nullptr, &A));
-    if (s.marked_ && s.Ap_ && !s.rebuild_ && !s.failed_)
+    // (-info :pc reports each set-up, the sub-step's first or a later
+    // one, and the build kept or made: tests/pendularCpr replays the
+    // criterion; PetscInfo's C cast of pc held from -Wold-style-cast)
+    const bool keep = s.marked_ && s.Ap_ && !s.rebuild_ && !s.failed_;
+    const std::string build =
+        keep ? std::string("kept") : std::to_string(s.nBuilds_ + 1);
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+    PetscCall
+    (
+        PetscInfo
+        (
+            pc, "cprPressureStage: set-up (%s): build %s\n",
+            s.firstSetUp_ ? "first" : "later", build.c_str()
+        )
+    );
+#pragma GCC diagnostic pop
+    s.firstSetUp_ = false;
+    if (keep)
     {
-        // The hierarchy, weights and A_p of the sub-step's first set-up
+        // The hierarchy, weights and A_p of the last build
         PetscFunctionReturn(0);
     }
     s.rebuild_ = false;
+    s.refRate_ = -1;
+    s.buildStep_ = true;
+    ++s.nBuilds_;
     if (!s.Ap_)
     {
         s.createMatrix(A);
     }
+    // (-log_view's events: the extraction of A_p and the weights, and
+    // the AMG's set-up, each build)
+    static PetscLogEvent extractEvent = 0, amgEvent = 0;
+    if (!extractEvent)
+    {
+        PetscClassId id;
+        PetscCall(PetscClassIdRegister("cprPressureStage", &id));
+        PetscCall(PetscLogEventRegister("CprExtractAp", id, &extractEvent));
+        PetscCall(PetscLogEventRegister("CprAmgSetUp", id, &amgEvent));
+    }
+    PetscCall(PetscLogEventBegin(extractEvent, 0, 0, 0, 0));
     PetscCall(MatZeroEntries(s.Ap_));
 
     const PetscInt B = s.nBlock_;
@@ -253,11 +285,14 @@ int Foam::cprPressureStage::setUp(PC pc)
     PetscCall(MatAssemblyEnd(s.Ap_, MAT_FINAL_ASSEMBLY));
     // (the pattern is made: an entry outside it would be a bug)
     PetscCall(MatSetOption(s.Ap_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+    PetscCall(PetscLogEventEnd(extractEvent, 0, 0, 0, 0));
 
     PetscCall(KSPSetOperators(s.ksp_, s.Ap_, s.Ap_));
     PetscCall(KSPSetFromOptions(s.ksp_));
     // (an AMG's error, e.g. a zero diagonal: a failed stage, see failed_)
+    PetscCall(PetscLogEventBegin(amgEvent, 0, 0, 0, 0));
     s.failed_ = KSPSetUp(s.ksp_) != 0;
+    PetscCall(PetscLogEventEnd(amgEvent, 0, 0, 0, 0));
     PetscFunctionReturn(0);
 }
 
@@ -358,7 +393,8 @@ Foam::cprPressureStage::cprPressureStage
     const label nBlock,
     const label field,
     const decouplingType decoupling,
-    const std::string& prefix
+    const std::string& prefix,
+    const scalar rebuildFactor
 )
 :
     nBlock_(nBlock),
@@ -369,6 +405,11 @@ Foam::cprPressureStage::cprPressureStage
     failed_(false),
     rebuild_(true),
     marked_(false),
+    rebuildFactor_(rebuildFactor),
+    refRate_(-1),
+    buildStep_(false),
+    firstSetUp_(false),
+    nBuilds_(0),
     Ap_(nullptr),
     ksp_(nullptr),
     rp_(nullptr),
@@ -400,6 +441,57 @@ void Foam::cprPressureStage::attach(PC pc)
 }
 
 
+std::string Foam::cprPressureStage::solved
+(
+    const label nIter,
+    const scalar r0,
+    const scalar rn,
+    const bool converged
+)
+{
+    if (!marked_ || rebuildFactor_ == 0 || rebuild_)
+    {
+        // (a build at each set-up or mark, or one already asked for)
+        return std::string();
+    }
+    if (!converged)
+    {
+        // A build of an earlier sub-step's matrix (else nothing to gain)
+        if (buildStep_)
+        {
+            return std::string();
+        }
+        rebuild_ = true;
+        return
+            "a solve stopped short of its tolerance after "
+          + std::to_string(nIter) + " iterations";
+    }
+    // Iterations per decade (a solve with no reduction to measure, e.g.
+    // 0 iterations at a zero right-hand side: no judgement)
+    if (!(nIter > 0 && r0 > 0 && rn >= 0 && rn < r0))
+    {
+        return std::string();
+    }
+    const scalar rate =
+        nIter/Foam::log10(r0/Foam::max(rn, r0*1e-300));
+    if (buildStep_)
+    {
+        refRate_ = Foam::max(refRate_, rate);
+        return std::string();
+    }
+    if (refRate_ > 0 && rate > rebuildFactor_*refRate_)
+    {
+        rebuild_ = true;
+        return
+            std::to_string(nIter) + " iterations, "
+          + std::to_string(rate) + " a decade against "
+          + std::to_string(refRate_) + " in the last build's sub-step"
+          + " (factor " + std::to_string(rebuildFactor_) + ")";
+    }
+    return std::string();
+}
+
+
 void Foam::cprPressureStage::reset()
 {
     if (ksp_) KSPDestroy(&ksp_);
@@ -409,6 +501,8 @@ void Foam::cprPressureStage::reset()
     weights_.clear();
     failed_ = false;
     rebuild_ = true;
+    refRate_ = -1;
+    buildStep_ = false;
 }
 
 
