@@ -87,6 +87,7 @@ Description
 #include "gaussConvectionScheme.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
+#include "pendularEngineSetup.H"
 #include "meshNonOrthogonality.H"
 #include "nanInjection.H"
 
