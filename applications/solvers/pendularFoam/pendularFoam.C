@@ -50,11 +50,10 @@ Description
     engine: newton (Newton on the coupled balances of a sub-step:
     src/coupled pendularNewton, its linear solver set by fvSolution's
     optional 'coupled' dictionary; the default, models A and B, model B
-    backward Euler only) or segregated (the iterations above; the
-    default on a non-orthogonal mesh, where the Newton engine's fluxes
-    lack the correction, and with a mixed boundary condition of T, p or
-    pw other than surfaceHeatLoss on T, which its residual would hold at
-    its last evaluated value: createNewton.H).
+    backward Euler only, on any mesh) or segregated (the iterations
+    above, only when asked). The engine's and the time scheme's
+    defaults, refusals and the Newton steps' linear solver: src/coupled
+    pendularEngineSetup.
     Saturated zone (liquidFlow's saturatedZone, Newton engine; issue 14):
     a cell is two-phase (T, p_g, W) or liquid-only (T, p_l, X, X the air
     dissolved per mass of water by Henry's law; primary-variable switching,
@@ -87,6 +86,7 @@ Description
 #include "gaussConvectionScheme.H"
 #include "petscSession.H"
 #include "pendularNewton.H"
+#include "pendularEngineSetup.H"
 #include "meshNonOrthogonality.H"
 #include "nanInjection.H"
 

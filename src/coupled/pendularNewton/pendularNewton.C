@@ -51,7 +51,9 @@ Foam::pendularNewton::pendularNewton
             blockSystem::preconditionerType::bjacobi
         )
      == blockSystem::preconditionerType::lu
-    )
+    ),
+    airGuardsStep_(Zero),
+    airGuardsRun_(Zero)
 {
     nanResidual_.report
     (
@@ -1038,6 +1040,101 @@ Foam::label Foam::pendularNewton::frontFirstIterate
 
 
 Foam::pendularNewton::result Foam::pendularNewton::solve
+(
+    pendularResidual& res,
+    scalarField& x,
+    const scalar pRef,
+    const bool limitChopRuns
+)
+{
+    const result r = iterate(res, x, pRef, limitChopRuns);
+    airGuardsStep_[0] += r.airLost;
+    airGuardsStep_[1] += r.nAirProjected;
+    airGuardsStep_[2] += r.nChordAirGuard;
+    airGuardsStep_[3] += r.nChordAirProjected;
+    airGuardsStep_[4] += r.converged ? r.nAirBelowZero : 0;
+    return r;
+}
+
+
+void Foam::pendularNewton::report(const result& r) const
+{
+    // A sub-step accepted with a scaled residual above 1 as judged
+    // (the round-off floor or stall acceptance: updates 100 times below
+    // their tolerances)
+    const bool acceptedAboveTolerance =
+        r.converged
+     && max(r.judged[0], max(r.judged[1], r.judged[2])) >= 1;
+    // A gas residual judged against its round-off floor where that is
+    // above its tolerance (gasRoundOff: cells whose pores are nearly full
+    // of liquid), the gas residual then in units of the larger of the two
+    const bool gasFloor = r.converged && r.nGasFloor > 0;
+    // liquidOnly cells accepted within the round-off floor of their
+    // unknowns (unknownsRoundOff), above their tolerances, with the
+    // largest floor; the residuals stay in units of the tolerances
+    const bool unknownsFloor = r.converged && r.nUnknownsFloor > 0;
+    if
+    (
+        verbose_ || (!r.converged && r.valid) || acceptedAboveTolerance
+     || gasFloor || unknownsFloor
+    )
+    {
+        Info<< "    Newton: " << r.iterations << " iterations, "
+            << (
+                   r.converged
+                 ? (
+                       acceptedAboveTolerance
+                     ? "converged at the residuals' round-off floor"
+                       " (updates below 1e-2 of their tolerances)"
+                     : "converged"
+                   )
+                 : "not converged"
+               );
+        if (gasFloor)
+        {
+            Info<< ", the gas residual of " << r.nGasFloor << " cell(s) at"
+                << " its round-off floor (10 epsilon times the sum of its"
+                << " terms, above pTol)";
+        }
+        if (unknownsFloor)
+        {
+            Info<< ", the residuals of " << r.nUnknownsFloor << " liquid-"
+                << "only cell(s) within the round-off floor of their"
+                << " unknowns (10 epsilon sum |dR/dx| |x|, up to "
+                << r.unknownsFloorMax << " tolerances)";
+        }
+        Info<< "; residual/tolerance water " << r.residual[0] << ", gas "
+            << r.residual[1] << ", energy " << r.residual[2] << endl;
+    }
+}
+
+
+Foam::string Foam::pendularNewton::endStep()
+{
+    forAll(airGuardsRun_, k)
+    {
+        airGuardsRun_[k] += airGuardsStep_[k];
+    }
+    return
+        ", refused for less than no air = " + Foam::name(airGuardsStep_[0])
+      + ", air projections = " + Foam::name(airGuardsStep_[1]);
+}
+
+
+void Foam::pendularNewton::writeAirGuards(Ostream& os) const
+{
+    os  << "Air guards of the Newton engine since the start of this run: "
+        << airGuardsRun_[0] << " sub-steps refused for less than no air"
+        << " (airLost), " << airGuardsRun_[1] << " cell projections onto"
+        << " p_a >= 0 by pTol or more; chord steps: " << airGuardsRun_[2]
+        << " sent back by their air projection, " << airGuardsRun_[3]
+        << " taken with cells projected by less than pTol; "
+        << airGuardsRun_[4] << " cells with p_a < 0 in converged solves"
+        << " (within airLost's uncertainty)" << nl;
+}
+
+
+Foam::pendularNewton::result Foam::pendularNewton::iterate
 (
     pendularResidual& res,
     scalarField& x,

@@ -1300,4 +1300,34 @@ Foam::tmp<Foam::scalarField> Foam::pendularState::energyResidual
 }
 
 
+Foam::string Foam::pendularState::liquidNearCritical() const
+{
+    const scalarField& porosity = medium_.porosity().primitiveField();
+    forAll(W_, celli)
+    {
+        if
+        (
+            medium_.liquidNearCritical
+            (
+                W_[celli], alphaL_[celli], saturationStates_[celli],
+                porosity[celli]
+            )
+        )
+        {
+            return
+                "cell " + Foam::name(celli) + " holds liquid water"
+                " near the critical point: T = "
+              + Foam::name(T_[celli]) + " K, alpha_l = "
+              + Foam::name(alphaL_[celli]) + ", W = "
+              + Foam::name(W_[celli]) + " kg/m3 (no liquid within "
+              + Foam::name(pendularMedium::criticalMargin)
+              + " K of " + Foam::name(medium_.dryOutTemperature())
+              + " K, nor water denser than the saturated vapour"
+                " above it)";
+        }
+    }
+    return string();
+}
+
+
 // ************************************************************************* //
