@@ -1085,7 +1085,9 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
         same = nullptr;
     }
     // A state the Jacobian stepped, and the state it is stepped from
-    const bool stepped = steppedFrom(celli, -1, x, x0);
+    // (not with the saturated zone: stepped states as the residual's)
+    const bool stepped =
+        !medium_.saturatedZone() && steppedFrom(celli, -1, x, x0);
     // The root of the state stepped from (before this one takes a slot:
     // a hit, the state of the residual at x; else evaluated here)
     scalar alphaB = 0, rhoWB = 0, TB = 0;
@@ -1244,7 +1246,8 @@ Foam::pendularResidual::cellState Foam::pendularResidual::neighbourState
     const scalar alphaOld = nbrAlphaOld_[bFacei];
     const label phase = nbrPhase_[bFacei];
     scalar x0[3];
-    const bool stepped = steppedFrom(-1, bFacei, xNei, x0);
+    const bool stepped =
+        !medium_.saturatedZone() && steppedFrom(-1, bFacei, xNei, x0);
     const scalar* key = stepped ? x0 : xNei;
     cacheEntry& e = nbrCache_[bFacei];
     if
