@@ -79,6 +79,7 @@ Description
 #include "andersonAcceleration.H"
 #include "adaptiveTimeStepControls.H"
 #include "subStepController.H"
+#include "OStringStream.H"
 #include "variableStepBdf2.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"

@@ -575,6 +575,7 @@ void Foam::blockSystem::createSolver
         hasOption(prefix, "pc_factor_mat_solver_type")
       ? env + "pc_factor_mat_solver_type)" : ""
     );
+    const bool scaleFromEnv = hasOption(prefix, "ksp_diagonal_scale");
 
     // The user's PETSc options first (they win over the keywords)
     setUserOptions(dict, prefix);
@@ -708,6 +709,39 @@ void Foam::blockSystem::createSolver
     (
         dict, pcFrom, factorFrom, createKsp(relTol, tolerance, maxIter)
     );
+
+    if (cpr_)
+    {
+        // Diagonal scaling set by PETSc's options (PETSC_OPTIONS or
+        // petscOptions; the keyword diagonalScale is refused above), read
+        // from the KSP as the options made it: besides the pressure
+        // stage's weights (those of the unscaled blocks), the rebuild
+        // criterion's rate would mix the unscaled |r_0| with PETSc's
+        // scaled |r_n|
+        PetscBool scaled = PETSC_FALSE;
+        petscSession::check
+        (
+            KSPGetDiagonalScale(ksp_, &scaled), "KSPGetDiagonalScale"
+        );
+        if (scaled)
+        {
+            const std::string option("-" + prefix + "ksp_diagonal_scale");
+            FatalIOErrorInFunction(dict)
+                << "PETSc option " << option.c_str() << " (from "
+                << (
+                       scaleFromEnv
+                     ? std::string("the environment variable PETSC_OPTIONS")
+                     : petscOptions
+                   ).c_str()
+                << ") with preconditioner cpr in " << dict.name()
+                << ": its pressure stage is not validated on a diagonally"
+                << " scaled system, and its rebuild criterion would compare"
+                << " the unscaled initial residual with the scaled final"
+                << " one; valid: remove " << option.c_str()
+                << " (or give it false), or another preconditioner"
+                << exit(FatalIOError);
+        }
+    }
 
     KSPType kspType;
     PC pcObj;
@@ -1575,7 +1609,11 @@ Foam::solverPerformance Foam::blockSystem::solve
                 (
                     MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd"
                 );
-                return solve(x, failOnDivergence);
+                // (both solves' Krylov iterations: the count of the
+                // logs' -ksp_converged_reason lines and GMRES totals)
+                solverPerformance again = solve(x, failOnDivergence);
+                again.nIterations() += label(nIter);
+                return again;
             }
         }
     }

@@ -479,7 +479,14 @@ std::string Foam::cprPressureStage::solved
         refRate_ = Foam::max(refRate_, rate);
         return std::string();
     }
-    if (refRate_ > 0 && rate > rebuildFactor_*refRate_)
+    if (refRate_ < 0)
+    {
+        // No solve of the build's sub-step measured a rate (each had 0
+        // iterations, or no reduction): the first later one is m_0
+        refRate_ = rate;
+        return std::string();
+    }
+    if (rate > rebuildFactor_*refRate_)
     {
         rebuild_ = true;
         return

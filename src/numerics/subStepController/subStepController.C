@@ -30,6 +30,7 @@ Foam::subStepController::subStepController
     nGrownRejected_(0),
     nRejected_(0),
     nSubSteps_(0),
+    lastRejection_(),
     totalIter_(0),
     maxChange_(0)
 {}
@@ -142,6 +143,7 @@ bool Foam::subStepController::reject(const label iter, const string& reason)
         grownSinceRejection_ = false;
     }
     ++nRejected_;
+    lastRejection_ = reason;
 
     Info<< "    step rejected after " << iter << " iterations";
     if (!reason.empty())
@@ -151,6 +153,26 @@ bool Foam::subStepController::reject(const label iter, const string& reason)
     Info<< ": retry with deltaT = " << dt_ << endl;
 
     return dt_ < controls_.minDeltaT();
+}
+
+
+void Foam::subStepController::failedBelowMinDeltaT
+(
+    const Time& runTime,
+    const string& advice
+) const
+{
+    FatalErrorInFunction
+        << "Nonlinear iterations failed with deltaT = " << dt_
+        << " < minDeltaT = " << controls_.minDeltaT() << " at time "
+        << runTime.timeName() << nl;
+    if (!lastRejection_.empty())
+    {
+        FatalError
+            << "    Last rejection: " << lastRejection_.c_str() << nl;
+    }
+    FatalError
+        << "    " << advice.c_str() << exit(FatalError);
 }
 
 

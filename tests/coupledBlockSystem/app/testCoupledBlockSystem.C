@@ -37,7 +37,13 @@ Description
        overflowing and a NaN 3x3 block, under OpenFOAM's floating-point
        traps): the solve ends unconverged with the reason, no SIGFPE; a
        right-hand side of 1e200 (its initial residual overflows) and a
-       NaN one: no signal, a breakdown reported (or x = b for 1e200).
+       NaN one: no signal, a breakdown reported (or x = b for 1e200);
+    5. preconditioner cpr only: its AMG hierarchy across the sub-steps a
+       caller marks: a build whose sub-step measured no rate (its solve
+       stopped short) takes the first rate measured after it as m_0 and
+       is built anew when a later solve's rate exceeds 2 m_0; a solve
+       stopped short on an older build is solved again on a new one and
+       returns both solves' iterations.
 
     Writes blockU0..2 (1.) and newtonU0..2 (3.) for the serial = parallel
     comparison of the test script. Options: -diverge (the linear solve
@@ -540,6 +546,177 @@ void breakdownChecks(const fvMesh& mesh)
 }
 
 
+//- Krylov iterations per decade of a solve's residual reduction (the rate
+//  of cprPressureStage's rebuild criterion), -1 if not measurable
+scalar kspRate(const solverPerformance& perf)
+{
+    const scalar r0 = perf.initialResidual();
+    const scalar rn = perf.finalResidual();
+    if (!(perf.nIterations() > 0 && r0 > 0 && rn >= 0 && rn < r0))
+    {
+        return -1;
+    }
+    return perf.nIterations()/Foam::log10(r0/max(rn, r0*1e-300));
+}
+
+
+//- 5. preconditioner cpr only, serial: its AMG hierarchy kept across the
+//  sub-steps a caller marks (resetForcing) and built anew by the rebuild
+//  criterion (cprRebuildFactor 2; cprPressureStage.H), on the linear
+//  system A_s: u0's balance (the pressure unknown's row: D and C) times s,
+//  s = 1, 5, 1000; maxIter 2 max(A_1's, A_1000's iterations from 0 on a
+//  fresh system) + 4 (serial: 40). A build is made at the first solve
+//  that iterates (a solve converged at iteration 0 applies no
+//  preconditioner: no set-up). Sub-steps (serial, hypre, measured):
+//  (a) A_1 from 1000 everywhere (53 iterations without maxIter): stopped
+//      short on build 1, in the build's own sub-step: no rate measured
+//      there (the rule's case: m_0 unset);
+//  (b) A_1 from its solution 1e-12 off: build 1 kept, 2 iterations,
+//      converged, 0.71 a decade: the first rate measured after the build,
+//      m_0 (before 2026-12-05 no m_0 ever, and only a solve stopped short
+//      built anew: planted back, (d) failed);
+//  (c) A_5 from 0 on build 1: 27 iterations, converged, 1.92 a decade,
+//      above 2 m_0 (checked: the sub-steps exercise the rule; 17
+//      iterations on a fresh build);
+//  (d) A_5 again: built anew at its set-up (build 2);
+//  (e) A_1000 from 0 on build 2: stopped short, solved again at once on
+//      build 3: the iterations returned are both solves' (maxIter + a
+//      fresh system's from 0, the second solve's twin: 40 + 17; before,
+//      the second's alone: planted back, failed)
+void cprRebuildChecks(const fvMesh& mesh, const dictionary& props)
+{
+    dictionary dict(mesh.solutionDict().subDict("coupled"));
+    if
+    (
+        dict.getOrDefault<word>("preconditioner", "") != "cpr"
+     || Pstream::parRun()
+    )
+    {
+        // (serial only: the sub-steps' iteration counts are tuned to the
+        // serial solves, e.g. (a)'s 53 iterations against maxIter 40; on
+        // 2 ranks A_1's fresh solve takes 26 and (a) converges in 54
+        // below maxIter 56. The decisions are made on global figures
+        // alike on every rank: tests/pendularCpr's 2-rank runs)
+        return;
+    }
+    section("5. cpr: the AMG hierarchy across marked sub-steps");
+    // (a name of its own: a prefix of its own for PETSc's options)
+    dict.name() = mesh.solutionDict().name() + ".coupledRebuild";
+    dict.set("cprRebuildFactor", 2);
+    dictionary props1(props);
+    props1.set("beta", 0.0);
+    props1.set("gamma", 0.0);
+    auto scaled = [&](const scalar s)
+    {
+        dictionary p(props1);
+        scalarList D(props1.get<scalarList>("D"));
+        scalarList C(props1.get<scalarList>("C"));
+        for (label j = 0; j < 3; ++j)
+        {
+            D[j] *= s;
+            C[j] *= s;
+        }
+        p.set("D", D);
+        p.set("C", C);
+        return p;
+    };
+    const diffusionTestProblem A1(mesh, props1);
+    const diffusionTestProblem A5(mesh, scaled(5));
+    const diffusionTestProblem A1000(mesh, scaled(1000));
+    const label n = 3*mesh.nCells();
+
+    // Fresh (unmarked) systems: the iterations of A_1 and A_1000 from 0,
+    // A_1's solution
+    label fresh1 = 0, fresh1000 = 0;
+    scalarField x1(n, Zero);
+    {
+        blockSystem fresh(mesh, 3, dict);
+        A1.assembleLinear(fresh);
+        fresh1 = fresh.solve(x1).nIterations();
+        scalarField x(n, Zero);
+        A1000.assembleLinear(fresh);
+        fresh1000 = fresh.solve(x).nIterations();
+    }
+    const label maxIter = 2*max(fresh1, fresh1000) + 4;
+    dict.set("maxIter", maxIter);
+    Info<< "fresh solves from 0: A_1 " << fresh1 << ", A_1000 " << fresh1000
+        << " iterations: maxIter " << maxIter << endl;
+
+    blockSystem sys(mesh, 3, dict);
+    auto subStep = [&]
+    (
+        const char* name,
+        const diffusionTestProblem& problem,
+        const scalarField& x0
+    )
+    {
+        sys.resetForcing();
+        problem.assembleLinear(sys);
+        scalarField x(x0);
+        const solverPerformance perf = sys.solve(x, false);
+        Info<< name << ": " << perf.nIterations() << " iterations, "
+            << (perf.converged() ? "converged" : "stopped short")
+            << ", residual " << perf.initialResidual() << " -> "
+            << perf.finalResidual() << ", " << kspRate(perf)
+            << " a decade, builds " << sys.cprBuilds() << endl;
+        return perf;
+    };
+    // (A_1's solution, each value 1e-12 of itself off)
+    scalarField x1p(x1);
+    forAll(x1p, i)
+    {
+        x1p[i] *= 1 + 1e-12*Foam::sin(1.0 + 0.37*(i + n*Pstream::myProcNo()));
+    }
+    const solverPerformance pa =
+        subStep("(a) A_1 from 1000", A1, scalarField(n, 1000));
+    checkTrue
+    (
+        "(a) stopped short at maxIter on build 1",
+        !pa.converged() && pa.nIterations() == maxIter
+     && sys.cprBuilds() == 1,
+        pa.nIterations(), maxIter, "=="
+    );
+    const solverPerformance pb =
+        subStep("(b) A_1 from near its solution", A1, x1p);
+    checkTrue
+    (
+        "(b) converged on build 1 (kept), rate measured",
+        pb.converged() && kspRate(pb) > 0 && sys.cprBuilds() == 1,
+        sys.cprBuilds(), 1, "=="
+    );
+    const solverPerformance pc =
+        subStep("(c) A_5 from 0", A5, scalarField(n, Zero));
+    checkTrue
+    (
+        "(c) converged on build 1, rate above 2 (b)'s",
+        pc.converged() && sys.cprBuilds() == 1
+     && kspRate(pc) > 2*kspRate(pb),
+        kspRate(pc), 2*kspRate(pb), ">"
+    );
+    const solverPerformance pd =
+        subStep("(d) A_5 from 0", A5, scalarField(n, Zero));
+    checkTrue
+    (
+        "(d) built anew (build 2) by the rate of (c) against (b)'s",
+        pd.converged() && sys.cprBuilds() == 2,
+        sys.cprBuilds(), 2, "=="
+    );
+    const solverPerformance pe =
+        subStep("(e) A_1000 from 0", A1000, scalarField(n, Zero));
+    checkTrue
+    (
+        "(e) stopped short on build 2, solved again on build 3",
+        pe.converged() && sys.cprBuilds() == 3,
+        sys.cprBuilds(), 3, "=="
+    );
+    checkAbs
+    (
+        "(e) iterations returned minus (maxIter + a fresh solve's)",
+        pe.nIterations() - (maxIter + fresh1000), 0, 0
+    );
+}
+
+
 //- Newton alone, timed (bench/coupledBlock): the cost per iteration and
 //  cell of the Jacobian assembly and of the linear solve
 void newtonCostOnly(const fvMesh& mesh, const diffusionTestProblem& problem)
@@ -635,6 +812,7 @@ int main(int argc, char *argv[])
             jacobianCheck(mesh, problem);
             newtonChecks(mesh, problem);
             breakdownChecks(mesh);
+            cprRebuildChecks(mesh, props);
         }
     }
 
