@@ -65,14 +65,30 @@ void Foam::coupledResidual::localJacobian
         const scalar h =
             differenceStep(celli, bFacei, y, j, step(yj, scale[j]));
         const bool twoSided = central && h > 0;
-        y[j] = yj + h;
-        G(y, Gp);
-        if (twoSided)
         {
-            y[j] = yj - h;
-            G(y, Gm);
+            // (steppedFrom: the local function may ask which state y is
+            // stepped from; unset on leaving, an exception included)
+            struct stepGuard
+            {
+                const coupledResidual& r;
+                ~stepGuard()
+                {
+                    r.stepCell_ = r.stepFace_ = -1;
+                }
+            } guard{*this};
+            stepCell_ = celli;
+            stepFace_ = bFacei;
+            stepUnknown_ = j;
+            stepBase_ = yj;
+            y[j] = yj + h;
+            G(y, Gp);
+            if (twoSided)
+            {
+                y[j] = yj - h;
+                G(y, Gm);
+            }
+            y[j] = yj;
         }
-        y[j] = yj;
         for (label i = 0; i < B; ++i)
         {
             dGdy(i, j) =
@@ -298,7 +314,11 @@ Foam::coupledResidual::coupledResidual
     (
         exchange_ ? 0 : nBlock*(mesh.nFaces() - mesh.nInternalFaces()),
         Zero
-    )
+    ),
+    stepCell_(-1),
+    stepFace_(-1),
+    stepUnknown_(0),
+    stepBase_(0)
 {
     for (const polyPatch& pp : mesh.boundaryMesh())
     {

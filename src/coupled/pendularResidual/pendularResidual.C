@@ -72,6 +72,7 @@ Foam::pendularResidual::pendularResidual
     alphaOld_(alphaOld),
     cache_(fvMesh_.nCells()),
     cacheNext_(fvMesh_.nCells(), Zero),
+    nbrCache_(),
     satCache_(fvMesh_.nCells()),
     satNext_(fvMesh_.nCells(), Zero),
     nbrPorosity_(),
@@ -101,13 +102,21 @@ Foam::pendularResidual::pendularResidual
     }
 
     // No state cached yet: keys no unknown can take
+    nbrCache_.setSize(fvMesh_.nBoundaryFaces());
     for (auto& entries : cache_)
     {
         for (cacheEntry& e : entries)
         {
             e.x[0] = e.x[1] = e.x[2] = -GREAT;
             e.phase = -1;
+            e.stepped = false;
         }
+    }
+    for (cacheEntry& e : nbrCache_)
+    {
+        e.x[0] = e.x[1] = e.x[2] = -GREAT;
+        e.phase = -1;
+        e.stepped = false;
     }
     for (auto& sats : satCache_)
     {
@@ -1045,12 +1054,22 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
     // whose relaxed liquid fraction depends on p_g too (the rate law's
     // rho_g and p_g; its other arguments, alphaOld_ and dt_, are fixed
     // for the residual's life: the key (x, phase) is complete). The first
-    // such entry, found in the same pass as the state itself
+    // such entry, found in the same pass as the state itself. A stepped
+    // entry serves a stepped state only, and is no such entry
+    scalar x0[3];
     const cellState* same = nullptr;
     for (const cacheEntry& e : entries)
     {
         if (e.x[0] == x[0] && e.x[2] == x[2] && e.phase == phase)
         {
+            if (e.stepped)
+            {
+                if (e.x[1] == x[1] && steppedFrom(celli, -1, x, x0))
+                {
+                    return e.s;
+                }
+                continue;
+            }
             if (e.x[1] == x[1])
             {
                 return e.s;
@@ -1065,6 +1084,20 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
     {
         same = nullptr;
     }
+    // A state the Jacobian stepped, and the state it is stepped from
+    // (not with the saturated zone: stepped states as the residual's)
+    const bool stepped =
+        !medium_.saturatedZone() && steppedFrom(celli, -1, x, x0);
+    // The root of the state stepped from (before this one takes a slot:
+    // a hit, the state of the residual at x; else evaluated here)
+    scalar alphaB = 0, rhoWB = 0, TB = 0;
+    if (stepped && !same)
+    {
+        const cellState& b = state(celli, x0);
+        alphaB = b.alpha;
+        rhoWB = b.rhoW;
+        TB = b.T;
+    }
     label& next = cacheNext_[celli];
     cacheEntry& e = entries[next];
     next = (next + 1) % nCache;
@@ -1075,11 +1108,18 @@ const Foam::pendularResidual::cellState& Foam::pendularResidual::state
             medium_, medium_.porosity()[celli], x[0], x[1] + pRef_, x[2],
             same->alpha, same->rhoW
         )
+      : stepped
+      ? steppedState
+        (
+            medium_.porosity()[celli], alphaOld_[celli], x,
+            saturation(celli, x[0]), phase, x0, alphaB, rhoWB, TB
+        )
       : state
         (
             medium_.porosity()[celli], alphaOld_[celli], x,
             saturation(celli, x[0]), phase
         );
+    e.stepped = stepped && !same;
     e.phase = phase;
     e.x[0] = x[0];
     e.x[1] = x[1];
@@ -1146,6 +1186,98 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
         W, sat, phi, pg, alphaOld, dt_, alphaOld, alpha, rhoW
     );
     return pendularState::closure(medium_, phi, T, pg, W, alpha, rhoW);
+}
+
+
+Foam::pendularResidual::cellState Foam::pendularResidual::steppedState
+(
+    const scalar phi,
+    const scalar alphaOld,
+    const scalar* x,
+    const pendularMedium::saturationState& sat,
+    const label phase,
+    const scalar* x0,
+    const scalar alphaB,
+    const scalar rhoWB,
+    const scalar TB
+) const
+{
+    if (phase != bothPhases || medium_.nonEquilibrium())
+    {
+        // liquidOnly: no inversion; model B: its rate law from alphaOld
+        return state(phi, alphaOld, x, sat, phase);
+    }
+    const scalar T = x[0];
+    const scalar pg = x[1] + pRef_;
+    const scalar W = x[2];
+    if (T == x0[0] && W == x0[2])
+    {
+        // A step of p_g: the liquid fraction and vapour stepped from
+        return pendularState::closure(medium_, phi, T, pg, W, alphaB, rhoWB);
+    }
+    scalar alpha, rhoW;
+    if
+    (
+        !medium_.alphaLNear
+        (
+            W, sat, phi, alphaB, rhoWB, TB, alpha, rhoW
+        )
+    )
+    {
+        // Inverted from the root stepped from (if dry: from alphaOld, as
+        // the residual)
+        medium_.water().liquidAndVapour
+        (
+            W, sat, phi, pg, alphaOld, dt_,
+            alphaB > 0 ? alphaB : alphaOld, alpha, rhoW
+        );
+    }
+    return pendularState::closure(medium_, phi, T, pg, W, alpha, rhoW);
+}
+
+
+Foam::pendularResidual::cellState Foam::pendularResidual::neighbourState
+(
+    const label bFacei,
+    const scalar* xNei
+) const
+{
+    const scalar phi = nbrPorosity_[bFacei];
+    const scalar alphaOld = nbrAlphaOld_[bFacei];
+    const label phase = nbrPhase_[bFacei];
+    scalar x0[3];
+    const bool stepped =
+        !medium_.saturatedZone() && steppedFrom(-1, bFacei, xNei, x0);
+    const scalar* key = stepped ? x0 : xNei;
+    cacheEntry& e = nbrCache_[bFacei];
+    if
+    (
+        !(
+            e.x[0] == key[0] && e.x[1] == key[1] && e.x[2] == key[2]
+         && e.phase == phase
+        )
+    )
+    {
+        e.s =
+            state
+            (
+                phi, alphaOld, key, medium_.saturationValues(key[0]), phase
+            );
+        e.x[0] = key[0];
+        e.x[1] = key[1];
+        e.x[2] = key[2];
+        e.phase = phase;
+    }
+    if (!stepped)
+    {
+        return e.s;
+    }
+    return
+        steppedState
+        (
+            phi, alphaOld, xNei, medium_.saturationValues(xNei[0]), phase,
+            x0, e.s.alpha, e.s.rhoW, e.s.T
+        );
 }
 
 
@@ -1337,12 +1469,7 @@ void Foam::pendularResidual::faceFlux
     label patchi, i;
     patchFace(facei, patchi, i);
     const label bFacei = facei - fvMesh_.nInternalFaces();
-    const cellState n =
-        state
-        (
-            nbrPorosity_[bFacei], nbrAlphaOld_[bFacei], xNei,
-            medium_.saturationValues(xNei[0]), nbrPhase_[bFacei]
-        );
+    const cellState n = neighbourState(bFacei, xNei);
     const scalar dc[3] =
     {
         deltaCoeffs_[0]->boundaryField()[patchi][i],

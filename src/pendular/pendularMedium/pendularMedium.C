@@ -20,6 +20,7 @@ namespace Foam
 const Foam::scalar Foam::pendularMedium::alphaLDry = 1e-100;
 const Foam::scalar Foam::pendularMedium::criticalMargin = 10;
 const Foam::scalar Foam::pendularMedium::alphaLCritical = 1e-9;
+const Foam::scalar Foam::pendularMedium::nearRootTol = 1e-6;
 
 const Foam::Enum<Foam::pendularMedium::vapourPressureLaw>
 Foam::pendularMedium::vapourPressureLawNames
@@ -942,6 +943,26 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydT
 }
 
 
+Foam::scalar Foam::pendularMedium::vapourSlopeTAtFixedW
+(
+    const scalar alphaL,
+    const saturationState& sat,
+    const scalar rhoW
+) const
+{
+    // 0 = dW = W_alpha d alpha + phi (1 - alpha) rho_w,T dT, with
+    // rho_w,alpha (dVapourDensitydAlphaL) and rho_w,T (dVapourDensitydT)
+    // from rhoW = rho_w(alpha) (the vapour evaluated once)
+    const scalar rhoWAlpha =
+        alphaL > 0 ? vapourSlope(rhoW, alphaL, sat) : 0;
+    const scalar rhoWT =
+        alphaL > 0
+      ? rhoW*(sat.dLnPSatdT + dLnRelativeHumiditydT(alphaL, sat) - 1/sat.T)
+      : 0;
+    return rhoWT*(rhoL() - rhoW)/(rhoL() - rhoW + (1 - alphaL)*rhoWAlpha);
+}
+
+
 Foam::scalar Foam::pendularMedium::dVapourDensitydTAtFixedW
 (
     const scalar alphaL,
@@ -949,12 +970,7 @@ Foam::scalar Foam::pendularMedium::dVapourDensitydTAtFixedW
     const scalar porosity
 ) const
 {
-    // 0 = dW = W_alpha d alpha + phi (1 - alpha) rho_w,T dT
-    const scalar rhoW = vapourDensity(alphaL, sat);
-    const scalar rhoWAlpha = dVapourDensitydAlphaL(alphaL, sat);
-    return
-        dVapourDensitydT(alphaL, sat)
-       *(rhoL() - rhoW)/(rhoL() - rhoW + (1 - alphaL)*rhoWAlpha);
+    return vapourSlopeTAtFixedW(alphaL, sat, vapourDensity(alphaL, sat));
 }
 
 
@@ -1125,6 +1141,43 @@ Foam::scalar Foam::pendularMedium::alphaL
 }
 
 
+bool Foam::pendularMedium::alphaLNear
+(
+    const scalar W,
+    const saturationState& sat,
+    const scalar porosity,
+    const scalar alphaB,
+    const scalar rhoWB,
+    const scalar TB,
+    scalar& alpha,
+    scalar& rhoW
+) const
+{
+    if (!(alphaB > alphaLDry && alphaB < 1) || sat.liquidFree)
+    {
+        return false;
+    }
+    // g and g' at alphaB (waterContent, dWaterContentdAlphaL)
+    const scalar rho0 = sat.T == TB ? rhoWB : vapourDensity(alphaB, sat);
+    const scalar rhoAlpha = vapourSlope(rho0, alphaB, sat);
+    const scalar g = porosity*(alphaB*rhoL() + (1 - alphaB)*rho0) - W;
+    const scalar dgdAlpha = porosity*(rhoL() - rho0 + (1 - alphaB)*rhoAlpha);
+    if (!(dgdAlpha > 0 && rho0 > 0))
+    {
+        return false;
+    }
+    const scalar dAlpha = -g/dgdAlpha;
+    const scalar k = 1 + mag(rhoAlpha)*alphaB/rho0;
+    if (!(k*mag(dAlpha) <= nearRootTol*alphaB))
+    {
+        return false;
+    }
+    alpha = alphaB + dAlpha;
+    rhoW = rho0 + rhoAlpha*dAlpha;
+    return true;
+}
+
+
 Foam::scalar Foam::pendularMedium::alphaL
 (
     const scalar W,
@@ -1186,14 +1239,16 @@ Foam::scalar Foam::pendularMedium::energyCapacity
 ) const
 {
     const scalar th = sat.T - latentHeatTemperature_;
+    // The Kelvin-Laplace vapour at alpha, evaluated once (0 if dry)
+    const scalar rhoWK = vapourDensity(alphaL, sat);
     return
         sensibleCapacity
         (
-            sat.T, W, alphaL, vapourDensity(W, alphaL, sat, porosity), pa,
-            porosity
+            sat.T, W, alphaL,
+            alphaL > 0 ? rhoWK : max(W, scalar(0))/porosity, pa, porosity
         )
       + porosity*(1 - alphaL)
-       *dVapourDensitydTAtFixedW(alphaL, sat, porosity)
+       *vapourSlopeTAtFixedW(alphaL, sat, rhoWK)
        *((CpVapour_ - CpLiquid_)*th + latentHeat_);
 }
 

@@ -1185,6 +1185,113 @@ void testConductivity()
 
 
 
+// * * * * * * * * pendularMedium: the Jacobian's stepped roots * * * * * * //
+
+//- pendularMedium::alphaLNear (pendularResidual::steppedState: a Jacobian
+//  step of a cell's T or W follows its unstepped state's Kelvin-Laplace
+//  root to first order) against the inversion alphaL, an independent
+//  computation of the same root: at T from 280 K to 1 K below the
+//  critical point and alpha_l from 1e-99 to 1 - 1e-9, the steps the
+//  Jacobian takes (coupledResidual::step, forward: sqrt(eps) max(|x|,
+//  scale), scale 300 K and 1e-4 kg/m3, either sign; a step of W limited
+//  to half the gas room as pendularResidual::cellStep). Where accepted,
+//  the finite difference of alpha_l and of rho_w over the step moves by
+//  at most nearRootTol (1e-6) of itself (alphaLNear's bound: the second
+//  order's error k |dalpha|/alpha relative), beyond the inversion's own
+//  round-off floor (its change with the guess, 1.001 and 0.999 of the
+//  root, plus 4 eps; near the critical point that floor is 1e-5 of the
+//  step's difference, alphaLNear's own error 1e-7); each medium accepts
+//  some steps and refuses some (|dalpha| beyond the bound)
+void testMediumNearRoot(const pendularMedium& m, const std::string& which)
+{
+    const scalar phi = m.porosity()[0];
+    const scalar hF = std::sqrt(eps);
+    const scalar Td = m.dryOutTemperature();
+    const scalar Ts[] = {280, 300, 373.15, 450, 550, 600, 630, 640, Td - 1};
+    const scalar alphas[] =
+    {
+        1e-99, 1e-50, 1e-20, 1e-12, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.05,
+        0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-9
+    };
+    label nAccepted = 0, nRefused = 0;
+    scalar worstA = 0, worstR = 0;
+    for (const scalar T : Ts)
+    {
+        const pendularMedium::saturationState sat = m.saturationValues(T);
+        for (const scalar a0 : alphas)
+        {
+            const scalar W = m.waterContent(a0, sat, phi);
+            const scalar aB = m.alphaL(W, sat, phi, a0);
+            const scalar rB = m.vapourDensity(aB, sat);
+            for (label kind = 0; kind < 4; ++kind)
+            {
+                // 0, 1: W up, down; 2, 3: T up, down
+                scalar W1 = W, T1 = T;
+                if (kind < 2)
+                {
+                    scalar h = hF*max(W, 1e-4)*(kind == 0 ? 1 : -1);
+                    const scalar room = phi*m.rhoL() - W;
+                    if (room > 0 && h > 0.5*room)
+                    {
+                        h = -max(0.5*room, 1e-4*h);
+                    }
+                    volatile scalar y = W + h;
+                    W1 = y;
+                }
+                else
+                {
+                    volatile scalar y =
+                        T + hF*max(T, 300.0)*(kind == 2 ? 1 : -1);
+                    T1 = y;
+                }
+                const pendularMedium::saturationState sat1 =
+                    m.saturationValues(T1);
+                scalar a = -1, r = -1;
+                if (!m.alphaLNear(W1, sat1, phi, aB, rB, T, a, r))
+                {
+                    ++nRefused;
+                    continue;
+                }
+                ++nAccepted;
+                const scalar aE = m.alphaL(W1, sat1, phi, aB);
+                const scalar rE = m.vapourDensity(aE, sat1);
+                const scalar floorA =
+                    mag(m.alphaL(W1, sat1, phi, 1.001*aB) - aE)
+                  + mag(m.alphaL(W1, sat1, phi, 0.999*aB) - aE)
+                  + 4*eps*aE;
+                const scalar floorR =
+                    mag(m.dVapourDensitydAlphaL(aE, sat1))*floorA
+                  + 8*eps*rE;
+                worstA =
+                    max
+                    (
+                        worstA,
+                        max(mag(a - aE) - 2*floorA, scalar(0))
+                       /max(mag(aE - aB), VSMALL)
+                    );
+                worstR =
+                    max
+                    (
+                        worstR,
+                        max(mag(r - rE) - 2*floorR, scalar(0))
+                       /max(mag(rE - rB), VSMALL)
+                    );
+            }
+        }
+    }
+    Info<< "    " << which.c_str() << ": alphaLNear accepted "
+        << nAccepted << " steps, refused " << nRefused << endl;
+    checkTrue(which + ": alphaLNear accepts and refuses some steps",
+        nAccepted > 0 && nRefused > 0, nAccepted, 0, ">");
+    checkAbs(which + ": alphaLNear, finite difference of alpha_l moved,"
+        " rel (beyond alphaL's round-off)", worstA, 0,
+        pendularMedium::nearRootTol);
+    checkAbs(which + ": alphaLNear, finite difference of rho_w moved,"
+        " rel (beyond alphaL's round-off)", worstR, 0,
+        pendularMedium::nearRootTol);
+}
+
+
 // * * * * * * * * * * * pendularMedium: Kelvin's vapour pressure * * * * * //
 
 //- A pendularMedium read from a one-cell case (its Time and mesh kept)
@@ -1257,6 +1364,7 @@ void testMediumKelvin
     const caseMedium law(lawCase);
     const pendularMedium& m = law.medium();
     const scalar phi = m.porosity()[0];
+    testMediumNearRoot(m, "leverettJ + kelvin");
     checkTrue("lawCase: vapourPressure kelvin",
         m.vapourPressure() == pendularMedium::vapourPressureLaw::kelvin,
         0, 0, "==");
@@ -1431,6 +1539,7 @@ void testMediumKelvin
         checkTrue("pendularCase: vapourPressure kelvin",
             b.vapourPressure() == pendularMedium::vapourPressureLaw::kelvin,
             0, 0, "==");
+        testMediumNearRoot(b, "pendular + kelvin");
         scalar errR = 0, errT = 0, errA = 0, lnMin = 0;
         for (const scalar T : Ts)
         {
@@ -1487,6 +1596,7 @@ void testMediumCriticalPoint(const fileName& caseDir)
         Td, 647.096, 0);
     checkAbs("lowest temperature of the laws", medium.minimumTemperature(),
         248.15, 0);
+    testMediumNearRoot(medium, "menisci (default laws)");
 
     // Any call of a law outside its range would throw: count them
     FatalError.throwExceptions();
