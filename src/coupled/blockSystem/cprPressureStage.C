@@ -481,8 +481,8 @@ std::string Foam::cprPressureStage::solved
     }
     if (refRate_ < 0)
     {
-        // No solve of the build's sub-step measured a rate (each had 0
-        // iterations, or no reduction): the first later one is m_0
+        // No solve of the build's sub-step measured a rate (each stopped
+        // short, or reduced nothing): the first later one is m_0
         refRate_ = rate;
         return std::string();
     }
