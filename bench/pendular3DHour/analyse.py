@@ -17,7 +17,10 @@ For each run:
     included) and per simulated hour (x 3600/END), the wall time
     (ClockTime), the steps, sub-steps, rejected sub-steps, the nonlinear
     (Newton or segregated) iterations in all and per accepted sub-step
-    (rejected sub-steps' iterations included).
+    (rejected sub-steps' iterations included);
+  * where they go: the same per phase of the window (the ramp to 60 s,
+    then to 600 s, 1800 s and END) with the CPU spent in it and the
+    sizes of its steps (min, median, max).
 The ratio is CPU(SEGRUN)/CPU(NEWRUN) per simulated hour; without NEWRUN,
 NEWRUN is the cheapest run on SEGRUN's ranks other than SEGRUN and REF
 whose T error is at most SEGRUN's (+ E_SAME). With REF = SEGRUN (no
@@ -61,6 +64,20 @@ def run_figures(case, end):
         return None
     steps = re.findall(r'pendularFoam: deltaT = \S+, iterations = (\d+), '
                        r'sub-steps = (\d+), rejected = (\d+)', log)
+    # each step: (its end time, deltaT, iterations, sub-steps, rejected,
+    # the CPU time at its end)
+    trace = []
+    for m in re.finditer(r'^Time = (\S+)$|^pendularFoam: deltaT = (\S+), '
+                         r'iterations = (\d+), sub-steps = (\d+), '
+                         r'rejected = (\d+)|^ExecutionTime = (\S+) s',
+                         log, re.M):
+        if m.group(1):
+            t = float(m.group(1))
+        elif m.group(2):
+            trace.append([t, float(m.group(2)), int(m.group(3)),
+                          int(m.group(4)), int(m.group(5)), None])
+        elif trace and trace[-1][5] is None:
+            trace[-1][5] = float(m.group(6))
     cpu = [float(x) for x in re.findall(r'ExecutionTime = (\S+) s', log)]
     clock = [float(x) for x in re.findall(r'ClockTime = (\S+) s', log)]
     ranks = 2 if re.search(r'^nProcs\s*:\s*2', log, re.M) else 1
@@ -82,7 +99,27 @@ def run_figures(case, end):
     return dict(ranks=ranks, steps=len(steps), subs=subs,
                 rejected=sum(int(s[2]) for s in steps), iters=iters,
                 itersPerSub=iters/max(subs, 1), cpu=cpu[-1], wall=clock[-1],
-                T=T, depth=depth)
+                T=T, depth=depth, trace=trace)
+
+
+def phases(run, end):
+    """Where the steps, iterations and CPU go: per phase of the window
+    (the ramp to 60 s, then to 600, 1800 s and END), the steps, rejected
+    sub-steps, iterations, CPU and the steps' sizes."""
+    bounds = [0] + [b for b in (60, 600, 1800) if b < end] + [end]
+    rows = []
+    cpu0 = 0.0
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        st = [s for s in run['trace'] if a < s[0] <= b*(1 + 1e-9)]
+        if not st:
+            continue
+        cpu1 = st[-1][5] if st[-1][5] is not None else cpu0
+        dts = sorted(s[1] for s in st)
+        rows.append((a, b, len(st), sum(s[4] for s in st),
+                     sum(s[2] for s in st), cpu1 - cpu0, dts[0],
+                     dts[len(dts)//2], dts[-1]))
+        cpu0 = cpu1
+    return rows
 
 
 def t_error(run, ref, t0=0):
@@ -132,6 +169,12 @@ def main():
                  r['iters'], r['itersPerSub'], r['cpu'], r['cpu']*hour,
                  r['wall'], e, '(%d, %.1f)' % (j, t) if j >= 0 else '',
                  1e3*abs(r['depth'] - ref['depth']), e60))
+    print('  where the steps go: phase [s], steps, rejected sub-steps,'
+          ' iterations (a step), CPU [s], the steps min/median/max [s]')
+    for name, r in runs.items():
+        for a, b, n, rej, it, cpu, d0, dm, d1 in phases(r, end):
+            print('  %-16s %5g-%-5g %5d %4d %6d (%5.2f) %8.1f   %7.3g %7.3g %7.3g'
+                  % (name, a, b, n, rej, it, it/n, cpu, d0, dm, d1))
     if segname not in runs:
         print('  no finished run %s: no ratio' % segname)
         return
