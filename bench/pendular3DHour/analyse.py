@@ -58,9 +58,12 @@ def interp(t, ts, vs):
     return (1 - w)*vs[i-1] + w*vs[i]
 
 
-def run_figures(case, end):
+def run_figures(case, end, unfinished=False):
+    """The figures of a run; None if it did not end, unless unfinished
+    (then those of its steps so far)."""
     log = open(os.path.join(case, 'log.pendularFoam')).read()
-    if not re.search(r'^End\s*$', log, re.M):
+    finished = re.search(r'^End\s*$', log, re.M) is not None
+    if not finished and not unfinished:
         return None
     steps = re.findall(r'pendularFoam: deltaT = \S+, iterations = (\d+), '
                        r'sub-steps = (\d+), rejected = (\d+)', log)
@@ -83,9 +86,9 @@ def run_figures(case, end):
     ranks = 2 if re.search(r'^nProcs\s*:\s*2', log, re.M) else 1
     T = probes(os.path.join(case, 'postProcessing/temperatures/0/T'))
     a = probes(os.path.join(case, 'postProcessing/dryingColumn/0/alphaL'))
-    if abs(T[-1][0] - end) > 1e-6*end:
+    if finished and abs(T[-1][0] - end) > 1e-6*end:
         sys.exit('pendular3DHour: %s ends at %g s, not %g' % (case, T[-1][0], end))
-    col = a[-1][1:]
+    col = a[-1][1:] if finished else []
     wet = [i for i, x in enumerate(col) if x >= ALPHA_DRY]
     if not wet:
         depth = float('nan')
@@ -99,7 +102,7 @@ def run_figures(case, end):
     return dict(ranks=ranks, steps=len(steps), subs=subs,
                 rejected=sum(int(s[2]) for s in steps), iters=iters,
                 itersPerSub=iters/max(subs, 1), cpu=cpu[-1], wall=clock[-1],
-                T=T, depth=depth, trace=trace)
+                T=T, depth=depth, trace=trace, finished=finished)
 
 
 def phases(run, end):
@@ -123,12 +126,13 @@ def phases(run, end):
 
 
 def t_error(run, ref, t0=0):
-    """Largest |T - T_ref| over the run's step times from t0 on and the
-    probes, and where (probe index, time)."""
+    """Largest |T - T_ref| over the run's step times from t0 on (to the
+    reference's last time) and the probes, and where (probe index,
+    time)."""
     T, Tr = run['T'], ref['T']
     tr = [row[0] for row in Tr]
     worst = (0.0, -1, 0.0)
-    for row in (r for r in T if r[0] >= t0):
+    for row in (r for r in T if t0 <= r[0] <= tr[-1]):
         for j in range(1, len(row)):
             e = abs(row[j] - interp(row[0], tr, [r[j] for r in Tr]))
             if e > worst[0]:
@@ -150,8 +154,14 @@ def main():
             else:
                 runs[name] = r
     if refname not in runs:
-        sys.exit('pendular3DHour: no finished reference run %s in %s'
-                 % (refname, rundir))
+        # an unfinished reference: the errors over the part it ran
+        case = os.path.join(rundir, refname)
+        if not os.path.isfile(os.path.join(case, 'log.pendularFoam')):
+            sys.exit('pendular3DHour: no reference run %s in %s'
+                     % (refname, rundir))
+        runs[refname] = run_figures(case, end, unfinished=True)
+        print('  the reference %s is unfinished: the errors below are over'
+              ' 0-%g s only (no dried depth)' % (refname, runs[refname]['T'][-1][0]))
     ref = runs[refname]
     hour = 3600/end
     print('pendular3DHour: %s, window 0-%g s, reference %s (dried depth %.2f mm)'
