@@ -17,7 +17,10 @@ For each run:
     included) and per simulated hour (x 3600/END), the wall time
     (ClockTime), the steps, sub-steps, rejected sub-steps, the nonlinear
     (Newton or segregated) iterations in all and per accepted sub-step
-    (rejected sub-steps' iterations included).
+    (rejected sub-steps' iterations included);
+  * where they go: the same per phase of the window (the ramp to 60 s,
+    then to 600 s, 1800 s and END) with the CPU spent in it and the
+    sizes of its steps (min, median, max).
 The ratio is CPU(SEGRUN)/CPU(NEWRUN) per simulated hour; without NEWRUN,
 NEWRUN is the cheapest run on SEGRUN's ranks other than SEGRUN and REF
 whose T error is at most SEGRUN's (+ E_SAME). With REF = SEGRUN (no
@@ -55,20 +58,37 @@ def interp(t, ts, vs):
     return (1 - w)*vs[i-1] + w*vs[i]
 
 
-def run_figures(case, end):
+def run_figures(case, end, unfinished=False):
+    """The figures of a run; None if it did not end, unless unfinished
+    (then those of its steps so far)."""
     log = open(os.path.join(case, 'log.pendularFoam')).read()
-    if not re.search(r'^End\s*$', log, re.M):
+    finished = re.search(r'^End\s*$', log, re.M) is not None
+    if not finished and not unfinished:
         return None
     steps = re.findall(r'pendularFoam: deltaT = \S+, iterations = (\d+), '
                        r'sub-steps = (\d+), rejected = (\d+)', log)
+    # each step: (its end time, deltaT, iterations, sub-steps, rejected,
+    # the CPU time at its end)
+    trace = []
+    for m in re.finditer(r'^Time = (\S+)$|^pendularFoam: deltaT = (\S+), '
+                         r'iterations = (\d+), sub-steps = (\d+), '
+                         r'rejected = (\d+)|^ExecutionTime = (\S+) s',
+                         log, re.M):
+        if m.group(1):
+            t = float(m.group(1))
+        elif m.group(2):
+            trace.append([t, float(m.group(2)), int(m.group(3)),
+                          int(m.group(4)), int(m.group(5)), None])
+        elif trace and trace[-1][5] is None:
+            trace[-1][5] = float(m.group(6))
     cpu = [float(x) for x in re.findall(r'ExecutionTime = (\S+) s', log)]
     clock = [float(x) for x in re.findall(r'ClockTime = (\S+) s', log)]
     ranks = 2 if re.search(r'^nProcs\s*:\s*2', log, re.M) else 1
     T = probes(os.path.join(case, 'postProcessing/temperatures/0/T'))
     a = probes(os.path.join(case, 'postProcessing/dryingColumn/0/alphaL'))
-    if abs(T[-1][0] - end) > 1e-6*end:
+    if finished and abs(T[-1][0] - end) > 1e-6*end:
         sys.exit('pendular3DHour: %s ends at %g s, not %g' % (case, T[-1][0], end))
-    col = a[-1][1:]
+    col = a[-1][1:] if finished else []
     wet = [i for i, x in enumerate(col) if x >= ALPHA_DRY]
     if not wet:
         depth = float('nan')
@@ -82,16 +102,37 @@ def run_figures(case, end):
     return dict(ranks=ranks, steps=len(steps), subs=subs,
                 rejected=sum(int(s[2]) for s in steps), iters=iters,
                 itersPerSub=iters/max(subs, 1), cpu=cpu[-1], wall=clock[-1],
-                T=T, depth=depth)
+                T=T, depth=depth, trace=trace, finished=finished)
+
+
+def phases(run, end):
+    """Where the steps, iterations and CPU go: per phase of the window
+    (the ramp to 60 s, then to 600, 1800 s and END), the steps, rejected
+    sub-steps, iterations, CPU and the steps' sizes."""
+    bounds = [0] + [b for b in (60, 600, 1800) if b < end] + [end]
+    rows = []
+    cpu0 = 0.0
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        st = [s for s in run['trace'] if a < s[0] <= b*(1 + 1e-9)]
+        if not st:
+            continue
+        cpu1 = st[-1][5] if st[-1][5] is not None else cpu0
+        dts = sorted(s[1] for s in st)
+        rows.append((a, b, len(st), sum(s[4] for s in st),
+                     sum(s[2] for s in st), cpu1 - cpu0, dts[0],
+                     dts[len(dts)//2], dts[-1]))
+        cpu0 = cpu1
+    return rows
 
 
 def t_error(run, ref, t0=0):
-    """Largest |T - T_ref| over the run's step times from t0 on and the
-    probes, and where (probe index, time)."""
+    """Largest |T - T_ref| over the run's step times from t0 on (to the
+    reference's last time) and the probes, and where (probe index,
+    time)."""
     T, Tr = run['T'], ref['T']
     tr = [row[0] for row in Tr]
     worst = (0.0, -1, 0.0)
-    for row in (r for r in T if r[0] >= t0):
+    for row in (r for r in T if t0 <= r[0] <= tr[-1]):
         for j in range(1, len(row)):
             e = abs(row[j] - interp(row[0], tr, [r[j] for r in Tr]))
             if e > worst[0]:
@@ -113,8 +154,14 @@ def main():
             else:
                 runs[name] = r
     if refname not in runs:
-        sys.exit('pendular3DHour: no finished reference run %s in %s'
-                 % (refname, rundir))
+        # an unfinished reference: the errors over the part it ran
+        case = os.path.join(rundir, refname)
+        if not os.path.isfile(os.path.join(case, 'log.pendularFoam')):
+            sys.exit('pendular3DHour: no reference run %s in %s'
+                     % (refname, rundir))
+        runs[refname] = run_figures(case, end, unfinished=True)
+        print('  the reference %s is unfinished: the errors below are over'
+              ' 0-%g s only (no dried depth)' % (refname, runs[refname]['T'][-1][0]))
     ref = runs[refname]
     hour = 3600/end
     print('pendular3DHour: %s, window 0-%g s, reference %s (dried depth %.2f mm)'
@@ -132,6 +179,12 @@ def main():
                  r['iters'], r['itersPerSub'], r['cpu'], r['cpu']*hour,
                  r['wall'], e, '(%d, %.1f)' % (j, t) if j >= 0 else '',
                  1e3*abs(r['depth'] - ref['depth']), e60))
+    print('  where the steps go: phase [s], steps, rejected sub-steps,'
+          ' iterations (a step), CPU [s], the steps min/median/max [s]')
+    for name, r in runs.items():
+        for a, b, n, rej, it, cpu, d0, dm, d1 in phases(r, end):
+            print('  %-16s %5g-%-5g %5d %4d %6d (%5.2f) %8.1f   %7.3g %7.3g %7.3g'
+                  % (name, a, b, n, rej, it, it/n, cpu, d0, dm, d1))
     if segname not in runs:
         print('  no finished run %s: no ratio' % segname)
         return
