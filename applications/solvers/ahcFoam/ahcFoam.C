@@ -60,6 +60,7 @@ Description
 #include "adaptiveTimeStepControls.H"
 #include "subStepController.H"
 #include "balanceMonitor.H"
+#include "exitWithStatus.H"
 #include "temperatureCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -113,12 +114,8 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    // Non-zero if an energy balance missed balanceTolerance. The status
-    // returned by main is lost in v1912 (argList's destructor calls
-    // Pstream::exit(0)): exit here
-    const int status = balances.exitStatus();
-    Pstream::exit(status);
-    return status;
+    // Non-zero if an energy balance missed balanceTolerance
+    exitWithStatus(balances.exitStatus());
 }
 
 

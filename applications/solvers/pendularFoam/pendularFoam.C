@@ -90,6 +90,7 @@ Description
 #include "pendularEngineSetup.H"
 #include "meshNonOrthogonality.H"
 #include "nanInjection.H"
+#include "exitWithStatus.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -135,15 +136,12 @@ int main(int argc, char *argv[])
 
     Info<< "End\n" << endl;
 
-    // Non-zero if a balance missed balanceTolerance. The status returned
-    // by main is lost in v1912 (argList's destructor calls
-    // Pstream::exit(0)): exit here
+    // Non-zero if a balance missed balanceTolerance. PETSc ends before MPI
+    // (exitWithStatus does not return: main's objects are not destroyed)
     const int status = balances.exitStatus();
-    // PETSc ends before MPI (Pstream::exit does not return)
     newton.clear();
     petsc.clear();
-    Pstream::exit(status);
-    return status;
+    exitWithStatus(status);
 }
 
 

@@ -113,6 +113,7 @@ Usage
 #include "Tuple2.H"
 #include "OFstream.H"
 #include "IOmanip.H"
+#include "exitWithStatus.H"
 #include <chrono>
 #include <iomanip>
 #include <sstream>
@@ -157,12 +158,12 @@ std::string hoursText(const scalar seconds)
     return os.str();
 }
 
-//- Stop with an exit status: in OpenFOAM v1912 the status returned by
-//  main is lost (argList's destructor calls Pstream::exit(0))
+//- Stop with an exit status (exitWithStatus: v1912 loses the status
+//  returned by main)
 void stop(const int status)
 {
     Info<< endl;
-    Pstream::exit(status);
+    exitWithStatus(status);
 }
 
 //- One forward run

@@ -12,6 +12,7 @@
 #include "IFstream.H"
 #include "ITstream.H"
 #include "OSspecific.H"
+#include "exitWithStatus.H"
 
 #include <cmath>
 #include <fstream>
@@ -256,7 +257,7 @@ void Foam::fitRefinement::check
             copy.clean();
             fwd.clean();
         }
-        Pstream::exit(128 + sig);
+        exitWithStatus(128 + sig);
     }
     if (why.size() && isFile(failedLog))
     {

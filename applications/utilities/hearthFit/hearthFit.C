@@ -107,6 +107,7 @@ Usage
 #include "fitFire.H"
 #include "fitRefinement.H"
 #include "tikhonov.H"
+#include "exitWithStatus.H"
 
 #include <csignal>
 #include <memory>
@@ -243,8 +244,7 @@ int main(int argc, char *argv[])
                 << " firstEstimate sub-dictionary" << exit(FatalIOError);
         }
         Info<< "End" << nl << endl;
-        Pstream::exit(0);
-        return 0;
+        exitWithStatus(0);
     }
 
     fwd.readWorkDir(fwdDict, casePath, startName, writeCasePath);
@@ -332,8 +332,7 @@ int main(int argc, char *argv[])
         const int sig = scratchCase::interrupted();
         state.interrupted(sig, fwd, report.elapsed(), params);
         if (!args.found("keepScratch")) fwd.clean();
-        Pstream::exit(128 + sig);
-        return 128 + sig;
+        exitWithStatus(128 + sig);
     }
 
     // ---- Report, the case with the best parameters
@@ -357,10 +356,9 @@ int main(int argc, char *argv[])
 
     Info<< "End" << nl << endl;
 
-    // The exit status must say whether the fit converged: a plain return
-    // from main is lost (argList's destructor calls Pstream::exit(0))
-    Pstream::exit(res.converged ? 0 : 1);
-    return res.converged ? 0 : 1;
+    // The exit status says whether the fit converged (exitWithStatus: v1912
+    // loses the status returned by main)
+    exitWithStatus(res.converged ? 0 : 1);
 }
 
 
