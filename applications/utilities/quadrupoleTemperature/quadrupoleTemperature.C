@@ -33,9 +33,10 @@ Description
     uniform initial temperature, the only initial state supported.
 
     (derivation, units, the gamma -> 0 limit and the numerically safe form
-    in thermalQuadrupoles.H). The step and ramp responses of each output
-    point are inverted (deHoogInversion.H) and superposed over the
-    piecewise-linear surface history (historyResponse.H: the convolution of
+    in src/quadrupoles/thermalQuadrupoles). The step and ramp responses of
+    each output point are inverted (src/numerics/deHoogInversion) and
+    superposed over the piecewise-linear surface history
+    (src/quadrupoles/historyResponse: the convolution of
     the step response with the history, exact for a piecewise-linear
     history).
 
