@@ -799,6 +799,19 @@ void Foam::checkedRead::checkAirTemperature
 }
 
 
+Foam::dictionary Foam::checkedRead::readDictionary(const fileName& file)
+{
+    if (!isFile(file))
+    {
+        FatalErrorInFunction
+            << "Cannot read the dictionary " << file << nl
+            << exit(FatalError);
+    }
+    IFstream is(file);
+    return dictionary(is);
+}
+
+
 Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
 {
     IFstream is(file);

@@ -35,4 +35,30 @@ Foam::volScalarField Foam::propertyField
     return volScalarField(io, mesh, uniformValue);
 }
 
+
+bool Foam::readCellValues
+(
+    const fvMesh& mesh,
+    const word& name,
+    scalarField& values
+)
+{
+    IOobject io
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        return false;
+    }
+    volScalarField fld(io, mesh);
+    values = fld.primitiveField();
+    return true;
+}
+
 // ************************************************************************* //

@@ -2,7 +2,7 @@
   hearthFoam: tests/deHoogInversion
 -------------------------------------------------------------------------------
     The de Hoog, Knight & Stokes (1982) inversion of quadrupoleTemperature
-    (applications/utilities/quadrupoleTemperature/deHoogInversion.H, plain
+    (src/numerics/deHoogInversion/deHoogInversion.H, plain
     C++) on transforms with known inverses, with its default parameters
     (M = 30, tolerance 1e-12, Tfactor 1), at 20 times per decade:
 
