@@ -710,6 +710,37 @@ void Foam::blockSystem::createSolver
         dict, pcFrom, factorFrom, createKsp(relTol, tolerance, maxIter)
     );
 
+    KSPType kspType;
+    PC pcObj;
+    PCType pcType;
+    petscSession::check(KSPGetType(ksp_, &kspType), "KSPGetType");
+    petscSession::check(KSPGetPC(ksp_, &pcObj), "KSPGetPC");
+    petscSession::check(PCGetType(pcObj, &pcType), "PCGetType");
+    solverName_ = word(std::string("PETSc-") + kspType + "-" + pcType);
+
+    if (pc == preconditionerType::cpr && !cpr_)
+    {
+        // PETSc's options set another preconditioner (createKsp): said,
+        // with both sources
+        // (pcFrom names the keyword when pc_type is the keyword's
+        // composite: the options changed its stages)
+        const bool byPcType = pcFrom.compare(0, 15, "preconditioner ") != 0;
+        Info<< "blockSystem " << solverName_ << ": preconditioner cpr"
+            << inFile.c_str() << " overridden by "
+            << (
+                   byPcType
+                 ? pcFrom
+                 : std::string
+                   (
+                       "PETSc's options of the composite's stages"
+                       " (PETSC_OPTIONS or petscOptions: its first stage"
+                       " not a shell)"
+                   )
+               ).c_str()
+            << ": PETSc's pc_type " << pcType
+            << ", no pressure stage (the cpr keywords unused)" << endl;
+    }
+
     if (cpr_)
     {
         // Diagonal scaling set by PETSc's options (PETSC_OPTIONS or
@@ -742,14 +773,6 @@ void Foam::blockSystem::createSolver
                 << exit(FatalIOError);
         }
     }
-
-    KSPType kspType;
-    PC pcObj;
-    PCType pcType;
-    petscSession::check(KSPGetType(ksp_, &kspType), "KSPGetType");
-    petscSession::check(KSPGetPC(ksp_, &pcObj), "KSPGetPC");
-    petscSession::check(PCGetType(pcObj, &pcType), "PCGetType");
-    solverName_ = word(std::string("PETSc-") + kspType + "-" + pcType);
 }
 
 
@@ -775,8 +798,11 @@ int Foam::blockSystem::createKsp
     const PetscErrorCode ierr = KSPSetFromOptions(ksp_);
     if (cpr_ && !ierr)
     {
-        // The shell of the composite's first stage (unless the options
-        // set another preconditioner: PETSC_OPTIONS' pc_type wins)
+        // The shell of the composite's first stage; none when PETSc's
+        // options (PETSC_OPTIONS, petscOptions: they win over the
+        // keywords) set another preconditioner: then no pressure stage
+        // (its diagonal-scaling refusal and AMG rebuilds follow the
+        // preconditioner PETSc uses)
         PC pc;
         petscSession::check(KSPGetPC(ksp_, &pc), "KSPGetPC");
         PetscBool isComposite = PETSC_FALSE;
@@ -805,10 +831,14 @@ int Foam::blockSystem::createKsp
                 "PetscObjectTypeCompare"
             );
         }
-        cpr_->reset();
         if (isShell)
         {
+            cpr_->reset();
             cpr_->attach(stage);
+        }
+        else
+        {
+            cpr_.clear();
         }
     }
     return ierr;

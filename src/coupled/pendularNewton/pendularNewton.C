@@ -466,6 +466,7 @@ bool Foam::pendularNewton::airLost
     out.nAirBelowZero = nBelow;
     if (n > 0)
     {
+        out.category = subStepController::rejection::airLost;
         out.failure =
             "the solution holds less than no air in " + Foam::name(n)
           + " cell(s) with gas (air partial pressure p_g - p_w down to "
@@ -497,6 +498,7 @@ bool Foam::pendularNewton::fullPores
     reduce(n, sumOp<label>());
     if (n > 0)
     {
+        out.category = subStepController::rejection::poresFilled;
         out.failure =
             "the solution fills the pores of " + Foam::name(n)
           + " cell(s) with liquid (W >= porosity rho_l, alpha_l = 1: no gas"
@@ -1157,6 +1159,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
     out.nChordAirProjected = 0;
     out.nAirBelowZero = 0;
     out.airLost = false;
+    out.category = subStepController::rejection::notConverged;
     if (!out.valid)
     {
         return out;
@@ -1208,6 +1211,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         reduce(nOscillating, sumOp<label>());
         if (nOscillating > 0)
         {
+            out.category = subStepController::rejection::phaseOscillation;
             out.failure =
                 "the phase state oscillates in " + Foam::name(nOscillating)
               + " cell(s) (more than " + Foam::name(maxSwitches_)
@@ -1286,6 +1290,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         const label nNonFinite = nonFiniteCells(R, sW, sG, sE);
         if (nNonFinite > 0)
         {
+            out.category = subStepController::rejection::nonFinite;
             out.failure =
                 "a non-finite residual (NaN or infinity) or a zero scale in "
               + Foam::name(nNonFinite) + " cell(s) at Newton iteration "
@@ -1545,6 +1550,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         }
         else if (rMax > divergenceFactor_*max(rFirst, scalar(1)))
         {
+            out.category = subStepController::rejection::diverged;
             out.failure =
                 "the Newton iterations diverged: largest scaled residual "
               + Foam::name(rMax) + " tolerances > "
@@ -1571,6 +1577,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         {
             // No Newton step: the sub-step ends unconverged at the last
             // iterate (still valid), to be rejected and retried shorter
+            out.category = subStepController::rejection::linearSolveFailed;
             out.failure =
                 "the linear solve of a Newton step broke down: "
               + system_.failure();
@@ -1688,6 +1695,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         chopRun = nChopped > 0 ? chopRun + 1 : 0;
         if (limitChopRuns && chopRun >= maxChopRun_)
         {
+            out.category = subStepController::rejection::noWaterRoot;
             out.failure =
                 "the water of " + Foam::name(nChopped) + " cell(s) chopped"
                 " (an update below dryingFactor of its value) in "
@@ -1709,6 +1717,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         nProjected += localWaterSolves(res, x, sW, nLocalNonFinite);
         if (nLocalNonFinite > 0)
         {
+            out.category = subStepController::rejection::nonFinite;
             out.failure =
                 "a non-finite water residual (NaN or infinity) in the local"
                 " water solve of " + Foam::name(nLocalNonFinite)

@@ -5,6 +5,25 @@
 #include "subStepController.H"
 #include "OStringStream.H"
 
+// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
+
+const Foam::Enum<Foam::subStepController::rejection>
+Foam::subStepController::rejectionNames
+({
+    { rejection::notConverged, "notConverged" },
+    { rejection::nonFinite, "nonFinite" },
+    { rejection::linearSolveFailed, "linearSolveFailed" },
+    { rejection::diverged, "diverged" },
+    { rejection::leftModel, "leftModel" },
+    { rejection::noWaterRoot, "noWaterRoot" },
+    { rejection::phaseOscillation, "phaseOscillation" },
+    { rejection::airLost, "airLost" },
+    { rejection::poresFilled, "poresFilled" },
+    { rejection::nearCritical, "nearCritical" },
+    { rejection::localError, "localError" },
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::subStepController::subStepController
@@ -31,6 +50,7 @@ Foam::subStepController::subStepController
     nRejected_(0),
     nSubSteps_(0),
     lastRejection_(),
+    lastCategory_(rejection::notConverged),
     totalIter_(0),
     maxChange_(0)
 {}
@@ -130,7 +150,12 @@ void Foam::subStepController::limitNextStep(const scalar factor)
 }
 
 
-bool Foam::subStepController::reject(const label iter, const string& reason)
+bool Foam::subStepController::reject
+(
+    const label iter,
+    const rejection category,
+    const string& reason
+)
 {
     totalIter_ += iter;
     dtNominal_ = 0.5*dt_;
@@ -144,13 +169,15 @@ bool Foam::subStepController::reject(const label iter, const string& reason)
     }
     ++nRejected_;
     lastRejection_ = reason;
+    lastCategory_ = category;
 
     Info<< "    step rejected after " << iter << " iterations";
     if (!reason.empty())
     {
         Info<< " (" << reason.c_str() << ")";
     }
-    Info<< ": retry with deltaT = " << dt_ << endl;
+    Info<< ": retry with deltaT = " << dt_ << " ["
+        << rejectionNames[category] << "]" << endl;
 
     return dt_ < controls_.minDeltaT();
 }
@@ -166,12 +193,13 @@ void Foam::subStepController::failedBelowMinDeltaT
         << "Nonlinear iterations failed with deltaT = " << dt_
         << " < minDeltaT = " << controls_.minDeltaT() << " at time "
         << runTime.timeName() << nl;
+    FatalError << "    Last rejection: ";
     if (!lastRejection_.empty())
     {
-        FatalError
-            << "    Last rejection: " << lastRejection_.c_str() << nl;
+        FatalError << lastRejection_.c_str() << " ";
     }
     FatalError
+        << "[" << rejectionNames[lastCategory_] << "]" << nl
         << "    " << advice.c_str() << exit(FatalError);
 }
 
@@ -179,13 +207,15 @@ void Foam::subStepController::failedBelowMinDeltaT
 void Foam::subStepController::retry
 (
     const label iter,
+    const rejection category,
     const string& reason,
     const string& how
 )
 {
     totalIter_ += iter;
     Info<< "    step retried after " << iter << " iterations ("
-        << reason.c_str() << "): " << how.c_str() << endl;
+        << reason.c_str() << "): " << how.c_str() << " ["
+        << rejectionNames[category] << "]" << endl;
 }
 
 

@@ -600,8 +600,11 @@ void cprRebuildChecks(const fvMesh& mesh, const dictionary& props)
         return;
     }
     section("5. cpr: the AMG hierarchy across marked sub-steps");
-    // (a name of its own: a prefix of its own for PETSc's options)
+    // (a name of its own: a prefix of its own for PETSc's options; without
+    // the case's petscOptions, which may set another preconditioner: the
+    // run cprOverriddenPetscOptions)
     dict.name() = mesh.solutionDict().name() + ".coupledRebuild";
+    dict.remove("petscOptions");
     dict.set("cprRebuildFactor", 2);
     dictionary props1(props);
     props1.set("beta", 0.0);

@@ -24,7 +24,15 @@ Description
        step rejected 6 times ends in 64 equal sub-steps;
     D. a step without rejection: one sub-step, the next step from it;
     E. the rejection that halves below minDeltaT is reported (the 16th
-       from 60 s: 60/2^16 < 1e-3 s);
+       from 60 s: 60/2^16 < 1e-3 s), and failedBelowMinDeltaT's FatalError
+       names its category without a reason, 'Last rejection:
+       [notConverged]';
+    F. the rejection categories (subStepController::rejection): every
+       name read back to its category; 15 rejections as nonFinite, the
+       16th as leftModel with a reason: the last rejection is leftModel
+       and the FatalError names it after the reason, 'Last rejection:
+       <reason> [leftModel]', not nonFinite; a retry logs its category
+       (the log lines' tokens: checked by the run script);
     and no sub-step beyond the rest of its step, each step's sub-steps
     adding up to it.
 
@@ -67,7 +75,7 @@ DynamicList<scalar> runStep
         const std::pair<label, scalar> d = decide(attempt, dt);
         if (d.first < 0)
         {
-            if (control.reject(30) && rejectedBelowMin < 0)
+            if (control.reject(30, subStepController::rejection::notConverged) && rejectedBelowMin < 0)
             {
                 rejectedBelowMin = attempt;
                 break;
@@ -269,6 +277,63 @@ int main(int argc, char *argv[])
             beyond, belowMin
         );
         checkAbs("E: rejection reported below minDeltaT (attempt, from 0)", belowMin, 15, 0);
+        checkThrows
+        (
+            "E: minDeltaT FatalError names the category",
+            [&]() { control.failedBelowMinDeltaT(runTime, "the advice"); },
+            {
+                "Nonlinear iterations failed with deltaT = ",
+                "< minDeltaT = 0.001",
+                "Last rejection: [notConverged]",
+                "the advice"
+            }
+        );
+    }
+
+    // F. The categories: names, the last one, the FatalError, a retry
+    {
+        typedef subStepController::rejection rejection;
+        const Enum<rejection>& names = subStepController::rejectionNames;
+        label nRead = 0;
+        for (const word& name : names.names())
+        {
+            nRead += (names[names[name]] == name);
+        }
+        checkAbs("F: categories named and read back", nRead, 11, 0);
+
+        subStepController control("F", controls, 60);
+        control.start(60);
+        label belowAt = -1;
+        for (label k = 0; k < 16 && control.loop(); ++k)
+        {
+            const bool below =
+                k < 15
+              ? control.reject(30, rejection::nonFinite)
+              : control.reject
+                (
+                    30, rejection::leftModel, "an iterate left the range"
+                );
+            if (below && belowAt < 0)
+            {
+                belowAt = k;
+            }
+        }
+        checkAbs("F: below minDeltaT at the 16th rejection", belowAt, 15, 0);
+        checkAbs
+        (
+            "F: the last rejection's category is leftModel",
+            label(control.lastRejection()), label(rejection::leftModel), 0
+        );
+        checkThrows
+        (
+            "F: minDeltaT FatalError names the last category",
+            [&]() { control.failedBelowMinDeltaT(runTime, "the advice"); },
+            {
+                "Last rejection: an iterate left the range [leftModel]\n",
+                "the advice"
+            }
+        );
+        control.retry(3, rejection::localError, "too inaccurate", "again");
     }
 
     Info<< nChecks - nFailed << " of " << nChecks << " checks passed" << endl;
