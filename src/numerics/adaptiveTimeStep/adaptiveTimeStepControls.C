@@ -78,12 +78,29 @@ void Foam::adaptiveTimeStepControls::checkTimeEntries(const argList& args)
 }
 
 
+Foam::wordList Foam::adaptiveTimeStepControls::keywords()
+{
+    return wordList
+    ({
+        "adjustTimeStep", "maxDeltaT", "minDeltaT", "maxDeltaTemperature",
+        "maxDeltaTGrowth"
+    });
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::adaptiveTimeStepControls::read()
 {
     const Time& runTime = mesh_.time();
     const dictionary& controlDict = runTime.controlDict();
+
+    // A misspelt keyword of ours ('maxDeltaTemprature', 'adjustTimestep')
+    // would be ignored by OpenFOAM and its default used silently
+    checkedRead::checkNearMisses
+    (
+        controlDict, keywords(), checkedRead::controlDictKeywords()
+    );
 
     adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", true);
 
