@@ -101,8 +101,18 @@ void Foam::subStepController::shrunkBelowMinDeltaT
         << controls_.minDeltaT() << " " << when.c_str()
         << " by the next-step rule (no rejection): the last accepted"
         << " sub-step of " << lastDeltaT_ << " s took " << lastIterations_
-        << " nonlinear iterations (more than maxIter/2 = "
-        << controls_.maxIter()/2 << " shrink the next step to 0.7 of it)"
+        << " nonlinear iterations ("
+        << (
+               lastIterations_ > controls_.maxIter()/2
+             ? "more than maxIter/2 = "
+             : "not limiting: at most maxIter/2 = "
+           )
+        << controls_.maxIter()/2
+        << (
+               lastIterations_ > controls_.maxIter()/2
+             ? ": the next step at most 0.7 of it)"
+             : ")"
+           )
         << " and changed T by up to " << lastMaxChange_
         << " K (maxDeltaTemperature " << controls_.maxDeltaTemperature()
         << " K)";
