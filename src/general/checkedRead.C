@@ -683,8 +683,27 @@ void Foam::checkedRead::checkNearMisses
         {
             continue;
         }
-        const word near(nearest(key, ours));
-        if (near.empty() || editDistance(key, near) > nearMissDistance)
+        word near(nearest(key, ours));
+        if (near.size() && editDistance(key, near) > nearMissDistance)
+        {
+            // Or a truncation of one of ours ('maxDeltaTemp' for
+            // maxDeltaTemperature): at least 8 characters, letter case
+            // ignored
+            near.clear();
+            for (const word& k : ours)
+            {
+                if
+                (
+                    key.size() >= 8 && key.size() < k.size()
+                 && editDistance(key, k.substr(0, key.size())) == 0
+                )
+                {
+                    near = k;
+                    break;
+                }
+            }
+        }
+        if (near.empty())
         {
             // Far from all of ours: the user's own entry
             continue;
