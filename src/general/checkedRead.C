@@ -665,6 +665,94 @@ void Foam::checkedRead::checkKeywords
 }
 
 
+void Foam::checkedRead::checkNearMisses
+(
+    const dictionary& dict,
+    const wordList& ours,
+    const wordList& others
+)
+{
+    for (const entry& e : dict)
+    {
+        const keyType& key = e.keyword();
+        if
+        (
+            key.isPattern() || key == "FoamFile"
+         || ours.found(key) || others.found(key)
+        )
+        {
+            continue;
+        }
+        word near(nearest(key, ours));
+        if (near.size() && editDistance(key, near) > nearMissDistance)
+        {
+            // Or a truncation of one of ours ('maxDeltaTemp' for
+            // maxDeltaTemperature): at least 8 characters, letter case
+            // ignored
+            near.clear();
+            for (const word& k : ours)
+            {
+                if
+                (
+                    key.size() >= 8 && key.size() < k.size()
+                 && editDistance(key, k.substr(0, key.size())) == 0
+                )
+                {
+                    near = k;
+                    break;
+                }
+            }
+        }
+        if (near.empty())
+        {
+            // Far from all of ours: the user's own entry
+            continue;
+        }
+        const label line = e.startLineNumber();
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+            line > 0 ? line : -1, -1
+        )   << "Unknown keyword '" << key << "'";
+        if (line > 0)
+        {
+            FatalIOError << " (line " << line << ")";
+        }
+        FatalIOError
+            << " in " << dict.name() << ": did you mean '" << near << "'?"
+            << " (OpenFOAM ignores an unknown entry, the default of '"
+            << near << "' would be used)" << nl << exit(FatalIOError);
+    }
+}
+
+
+Foam::wordList Foam::checkedRead::controlDictKeywords()
+{
+    return wordList
+    ({
+        "application", "startFrom", "startTime", "stopAt", "endTime",
+        "deltaT", "writeControl", "writeInterval", "writeFrequency",
+        "purgeWrite", "writeFormat", "writePrecision", "writeCompression",
+        "writeVersion", "timeFormat", "timePrecision", "graphFormat",
+        "runTimeModifiable", "adjustTimeStep", "maxCo", "maxAlphaCo",
+        "maxDi", "maxDeltaT", "functions", "libs", "DebugSwitches",
+        "InfoSwitches", "OptimisationSwitches", "DimensionedConstants",
+        "DimensionSets", "Documentation", "profiling", "fileHandler",
+        "cacheTemporaryObjects"
+    });
+}
+
+
+Foam::wordList Foam::checkedRead::fvSolutionKeywords()
+{
+    return wordList
+    ({
+        "solvers", "relaxationFactors", "cache", "select", "PIMPLE",
+        "SIMPLE", "PISO", "potentialFlow", "stressAnalysis"
+    });
+}
+
+
 Foam::wordList Foam::checkedRead::function1Keywords
 (
     const dictionary& dict,

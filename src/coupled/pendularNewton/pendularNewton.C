@@ -55,6 +55,20 @@ Foam::pendularNewton::pendularNewton
     airGuardsStep_(Zero),
     airGuardsRun_(Zero)
 {
+    // The unknowns' updates and the residuals are measured in units of
+    // the tolerances (divided by them): a tolerance of 0 (or below, or
+    // not finite) would divide by zero (SIGFPE at the first iteration).
+    // The solvers refuse such values at read (range (0, inf)); a caller
+    // that does not is stopped here, before any iteration
+    if (!(TTol > 0 && pTol > 0 && WTolAbs > 0) || !std::isfinite(TTol)
+     || !std::isfinite(pTol) || !std::isfinite(WTolAbs))
+    {
+        FatalErrorInFunction
+            << "Tolerances TTol = " << TTol << " K, pTol = " << pTol
+            << " Pa, WTol (absolute) = " << WTolAbs << " must be finite and"
+            << " in (0, inf): the iterations measure their updates and"
+            << " residuals in units of them" << exit(FatalError);
+    }
     nanResidual_.report
     (
         "pendularNewton: the water residual of the first cell (master)"

@@ -42,7 +42,8 @@ Foam::adaptiveTimeStepControls::adaptiveTimeStepControls
     minDeltaT_(1e-6),
     maxDeltaTemperature_(defaultMaxDeltaTemperature),
     maxDeltaTGrowth_(defaultMaxDeltaTGrowth),
-    maxIter_(defaultMaxIter)
+    maxIter_(defaultMaxIter),
+    maxIterWarned_(false)
 {
     read();
 }
@@ -77,12 +78,29 @@ void Foam::adaptiveTimeStepControls::checkTimeEntries(const argList& args)
 }
 
 
+Foam::wordList Foam::adaptiveTimeStepControls::keywords()
+{
+    return wordList
+    ({
+        "adjustTimeStep", "maxDeltaT", "minDeltaT", "maxDeltaTemperature",
+        "maxDeltaTGrowth"
+    });
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::adaptiveTimeStepControls::read()
 {
     const Time& runTime = mesh_.time();
     const dictionary& controlDict = runTime.controlDict();
+
+    // A misspelt keyword of ours ('maxDeltaTemprature', 'adjustTimestep')
+    // would be ignored by OpenFOAM and its default used silently
+    checkedRead::checkNearMisses
+    (
+        controlDict, keywords(), checkedRead::controlDictKeywords()
+    );
 
     adjustTimeStep_ = controlDict.getOrDefault<bool>("adjustTimeStep", true);
 
@@ -160,8 +178,25 @@ void Foam::adaptiveTimeStepControls::read()
     maxIter_ =
         checkedRead::getLabelOrDefault
         (
-            nonlinearDict, "maxIter", defaultMaxIter_, 1
+            nonlinearDict, "maxIter", defaultMaxIter_, 2
         );
+    // maxIter 2 or 3: a sub-step that takes more than maxIter/2 = 1
+    // iteration shrinks the next step by 0.7 (stepFactor), and only a
+    // first iterate already within the tolerances converges in 1: the step
+    // stays small (hostile testing 2026-12-05: tutorials/column1D on 20
+    // cells held at ~1e-3 s with maxIter 2 and 3)
+    if (maxIter_ < 4 && !maxIterWarned_)
+    {
+        maxIterWarned_ = true;
+        WarningInFunction
+            << "nonlinear { maxIter " << maxIter_ << "; } in "
+            << nonlinearDict.name() << ": a sub-step of more than"
+            << " maxIter/2 = " << maxIter_/2 << " iteration shrinks the next"
+            << " step to 0.7 of it, and a sub-step converges in one"
+            << " iteration only when its first iterate is within the"
+            << " tolerances: the time step will stay small. maxIter 4 or"
+            << " more lets steps of 2 iterations grow" << endl;
+    }
 }
 
 
@@ -200,10 +235,19 @@ void Foam::adaptiveTimeStepControls::setDeltaT
         return;
     }
 
-    runTime.setDeltaT
-    (
-        min(stepFactor(lastMaxChange, lastIterations)*lastDeltaT, maxDeltaT_)
-    );
+    runTime.setDeltaT(nextDeltaT(lastDeltaT, lastMaxChange, lastIterations));
+}
+
+
+Foam::scalar Foam::adaptiveTimeStepControls::nextDeltaT
+(
+    const scalar lastDeltaT,
+    const scalar lastMaxChange,
+    const label lastIterations
+) const
+{
+    return
+        min(stepFactor(lastMaxChange, lastIterations)*lastDeltaT, maxDeltaT_);
 }
 
 

@@ -68,6 +68,32 @@ Foam::label Foam::subStepController::hold() const
 
 void Foam::subStepController::setDeltaT(Time& runTime) const
 {
+    // The next step below minDeltaT (the next-step rule shrinks it, e.g. by
+    // 0.7 after every sub-step of more than maxIter/2 iterations): stopped
+    // before it is set (Time::adjustDeltaT divides by it)
+    if
+    (
+        controls_.adjustTimeStep()
+     && runTime.timeIndex() > runTime.startTimeIndex()
+    )
+    {
+        scalar next =
+            controls_.nextDeltaT
+            (
+                lastDeltaT_, lastMaxChange_, lastIterations_
+            );
+        if (nextStepFactor_ < GREAT)
+        {
+            next = min(next, nextStepFactor_*lastDeltaT_);
+        }
+        if (!(next >= controls_.minDeltaT()))
+        {
+            OStringStream when;
+            when<< "at time " << runTime.timeName();
+            shrunkBelowMinDeltaT(next, when.str());
+        }
+    }
+
     controls_.setDeltaT
     (
         runTime, lastDeltaT_, lastMaxChange_, lastIterations_
@@ -81,6 +107,47 @@ void Foam::subStepController::setDeltaT(Time& runTime) const
     {
         runTime.setDeltaT(nextStepFactor_*lastDeltaT_);
     }
+}
+
+
+void Foam::subStepController::shrunkBelowMinDeltaT
+(
+    const scalar deltaT,
+    const string& when
+) const
+{
+    FatalErrorInFunction
+        << "Time step shrunk to deltaT = " << deltaT << " < minDeltaT = "
+        << controls_.minDeltaT() << " " << when.c_str()
+        << " by the next-step rule (no rejection): the last accepted"
+        << " sub-step of " << lastDeltaT_ << " s took " << lastIterations_
+        << " nonlinear iterations ("
+        << (
+               lastIterations_ > controls_.maxIter()/2
+             ? "more than maxIter/2 = "
+             : "not limiting: at most maxIter/2 = "
+           )
+        << controls_.maxIter()/2
+        << (
+               lastIterations_ > controls_.maxIter()/2
+             ? ": the next step at most 0.7 of it)"
+             : ")"
+           )
+        << " and changed T by up to " << lastMaxChange_
+        << " K (maxDeltaTemperature " << controls_.maxDeltaTemperature()
+        << " K)";
+    if (nextStepFactor_ < GREAT)
+    {
+        FatalError
+            << "; the local error estimate limits the next step to "
+            << nextStepFactor_ << " of it";
+    }
+    FatalError
+        << nl << "    Raise nonlinear { maxIter; } in system/fvSolution"
+        << " (now " << controls_.maxIter() << ") if the iterations shrank"
+        << " it, maxDeltaTemperature in system/controlDict if the change"
+        << " of T did, or lower minDeltaT there if such steps are meant"
+        << exit(FatalError);
 }
 
 
@@ -105,6 +172,14 @@ bool Foam::subStepController::loop()
 {
     if (elapsed_ < DeltaT_*(1 - 1e-10))
     {
+        // Below minDeltaT by limitNextStep (a local error estimate), not by
+        // a rejection (reject: the solver's failedBelowMinDeltaT)
+        if (!(dtNominal_ >= controls_.minDeltaT()))
+        {
+            OStringStream when;
+            when<< elapsed_ << " s into the time step of " << DeltaT_ << " s";
+            shrunkBelowMinDeltaT(dtNominal_, when.str());
+        }
         dt_ = min(dtNominal_, DeltaT_ - elapsed_);
         return true;
     }
