@@ -7,32 +7,40 @@ was written, then hearthCase -resume; REFERENCE: the same dictionary run
 whole. Both on 2 ranks (decomposed).
 
 1. Fields T, TMax, liquidWater at every time written after TR (the same
-   time names in both): within 1e-3 K (T, TMax) and 1e-6 (liquidWater, a
+   time names in both): within 5e-3 K (T, TMax) and 1e-5 (liquidWater, a
    volume fraction ~0.05). Why not equal: a restart changes the first
    iterate of its first step (ahcFoam's extrapolation from the last steps'
-   enthalpy rates is not written), and its first step is the stored
-   deltaT, shortened to land on the write time TR, where the run went on
-   with its full step: the steps after TR fall at other times (e.g.
-   3658.6 s for 3660 s) until the write times, which both land on. The
-   fields then differ by the nonlinear tolerance of the steps and the
-   change of backward Euler's error with the step sequence: measured
-   6.7e-5 K at the write after the restart, 3.7e-6 K at 6 h (1 h writes),
-   and the hostile testing of 2026-12-05 measured 2e-4 K on a restart; a
-   resume from a wrong time (the fire's clock restarted, a time lost)
-   differs by kelvins.
+   enthalpy rates is not written), and the step controller's state (the
+   last step's change of T and iterations) is not written either: the
+   first step after TR is the stored deltaT, shortened to land on the
+   write time (58.6 s), where the run went on with its full 60 s; the steps
+   after TR fall at other times until the next write time, which both land
+   on. The fields then differ by the change of backward Euler's error with
+   the step sequence (steps <= maxDeltaT 60 s, up to 2.5 K per step in the
+   hottest cells): measured, restarted at 1800 s (30 min writes), 1.19e-3
+   K at 3600 s, 6.5e-4 at 5400 s, 1.7e-4 at 10800 s (liquidWater 2.2e-6);
+   restarted at 3600 s (1 h writes) 6.7e-5 K; the hostile testing of
+   2026-12-05 measured 2e-4 K on a restart. The test restarts at 1800 s or
+   later (the earliest, the hottest changes: the largest difference
+   measured); 5e-3 K is 4 times it. A resume from a wrong time (the fire's
+   clock restarted, a time lost) differs by kelvins.
 2. The merged sensor history postProcessing/thermocouples/0/sensors.csv:
    its rows up to TR are the reference's, byte for byte (the same run up
    to there, on the same 2 ranks); after TR, one row per step of the
    resumed solver (the 'Time = ' lines of log.ahcFoam, in order: no time
-   missing, none twice), strictly increasing, to the end time; their
-   values within 1e-3 K (as 1) plus the error of the linear interpolation
-   of the reference at those times, bounded by its largest second
-   difference around the point over 8 (|T''| h^2/8 of the interval's h).
+   missing, none twice), strictly increasing, to the end time; at the
+   write times (both runs land on them) within 5e-3 K (as 1; 6.5e-4
+   measured), between them within 5e-3 K plus the error of the linear
+   interpolation of the reference at the resumed times, |T''| h^2/8 over
+   the reference's interval h, T'' its second divided differences at both
+   ends of the interval (3e-4 K beyond that measured).
 3. summary.csv (the balances added up over the two logs: the interrupted
-   one kept as log.ahcFoam.TR): heat in, stored, water within 1e-6
-   relative (the restart's difference of 1 is below 1e-7 of them); peaks
-   and depths within 1e-3 K and 1e-3 cm; the peak times within one
-   maxDeltaT (60 s).
+   one kept as log.ahcFoam.TR): heat in, stored, water within 1e-5
+   relative (3.5e-7, 3.5e-7, 9.3e-7 measured: the difference of 1 over
+   the heated soil); peaks within 5e-3 K and depths within 5e-3 cm (as
+   1); the peak times within one maxDeltaT (60 s). Summed over one log
+   only (the summary before -resume), heat in is that since TR: 3.15
+   instead of 5.11 MJ (TR 1800 s).
 4. system/controlDict: only startFrom differs from the reference's
    (latestTime), the rest as hearthCase wrote it.
 """
@@ -50,7 +58,7 @@ from hearthcheck import Check    # noqa: E402
 
 res, ref, tr = sys.argv[1:4]
 c = Check('resume')
-TOL_T = 1e-3
+TOL_T = 5e-3
 
 # 1. fields
 times = [os.path.basename(d) for d in ht.time_dirs(ref)
@@ -58,7 +66,7 @@ times = [os.path.basename(d) for d in ht.time_dirs(ref)
 c.true('reference: times written after %s s' % tr, len(times) >= 2,
        ' '.join(times))
 for t in times:
-    for f, tol in (('T', TOL_T), ('TMax', TOL_T), ('liquidWater', 1e-6)):
+    for f, tol in (('T', TOL_T), ('TMax', TOL_T), ('liquidWater', 1e-5)):
         a = ht.read_internal_field(os.path.join(res, t, f))
         b = ht.read_internal_field(os.path.join(ref, t, f))
         c.true('%s/%s: %d cells' % (t, f, len(b)), len(a) == len(b))
@@ -94,17 +102,27 @@ c.true('sensors: times strictly increasing, to %g s' % float(times[-1]),
        and abs(allT[-1] - float(times[-1])) < 1e-9*allT[-1])
 ref2 = [[float(x) for x in r.split(',')] for r in rRef]
 tRef = [r[0] for r in ref2]
+for t in times:
+    a = [r for r in after if abs(r[0] - float(t)) < 1e-9*float(t)]
+    b = [r for r in ref2 if abs(r[0] - float(t)) < 1e-9*float(t)]
+    if c.true('sensors: a row at %s s in both' % t, len(a) == len(b) == 1):
+        c.le('sensors at %s s: max |resumed - uninterrupted| [K]' % t,
+             max(abs(x - y) for x, y in zip(a[0][1:], b[0][1:])), TOL_T)
 worst = 0.0
 for r in after:
     t = r[0]
     i = bisect.bisect_left(tRef, t)         # tRef[i - 1] < t <= tRef[i]
+    h = tRef[i] - tRef[i - 1]
     for j in range(1, len(r)):
         col = [q[j] for q in ref2]
         interp = ht.interpolate(tRef, col, t)
-        d2 = max(abs(col[k - 1] - 2*col[k] + col[k + 1])
+        # |T''| from the second divided differences at both ends
+        d2 = max(abs(2*((col[k + 1] - col[k])/(tRef[k + 1] - tRef[k])
+                        - (col[k] - col[k - 1])/(tRef[k] - tRef[k - 1]))
+                     / (tRef[k + 1] - tRef[k - 1]))
                  for k in (i - 1, i) if 0 < k < len(col) - 1)
-        worst = max(worst, abs(r[j] - interp) - d2/8)
-c.le('sensors after %s s: |resumed - interpolated| - |d2T|/8 [K]' % tr,
+        worst = max(worst, abs(r[j] - interp) - d2*h*h/8)
+c.le('sensors after %s s: |resumed - interpolated| - |T\'\'| h^2/8 [K]' % tr,
      worst, TOL_T)
 
 
@@ -119,7 +137,7 @@ c.true('summary.csv: the same figures', sorted(fRes) == sorted(fRef))
 for k in sorted(fRef):
     d = abs(fRes.get(k, float('nan')) - fRef[k])
     if k in ('heatIn', 'stored', 'water'):
-        c.le('summary %s: relative difference' % k, d/abs(fRef[k]), 1e-6)
+        c.le('summary %s: relative difference' % k, d/abs(fRef[k]), 1e-5)
     elif k.startswith('peakTime'):
         c.le('summary %s [h]' % k, d, 60/3600)
     else:
