@@ -9,6 +9,7 @@
   (hearthAlteration's summary.csv at the last time, plus lineStart of
   hearthCaseInfo where the lines start under the surface: scannedPit);
 - the energy balance of the whole hearth: the solver's balance of the mesh
+  (added up over the parts of a resumed run: hearthCaseRestart.runBalances)
   times the factor from the mesh to the whole hearth (pi/tan(angle/2) for
   an axisymmetric wedge, 4 for a quarter pit, 1 otherwise:
   system/hearthCaseInfo);
@@ -24,6 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hearthTutorial as ht      # noqa: E402
+import hearthCaseRestart as hr   # noqa: E402
 
 
 def info(case):
@@ -65,20 +67,22 @@ def main(case):
     w('(depths below the fire surface: the basin or pit floor, under the '
       'rim at %s m from the axis)' % inf['rim'])
     w('')
-    log = os.path.join(case, 'log.' + solver)
+    # the balances of a run resumed (hearthCase -resume) add up over its
+    # parts (log.<solver>.<time>, then log.<solver>): each part's flows and
+    # stored change from its own start
+    first, parts = hr.runBalances(case, solver)
+    last = parts[-1]
     if solver == 'ahcFoam':
-        first, last = ht.energy_balance(log, 0), ht.energy_balance(log, -1)
-        heatIn, stored = last['in']*factor, last['stored']*factor
-        imb = last['imbalance']*factor
+        heatIn = sum(b['in'] for b in parts)*factor
+        stored = sum(b['stored'] for b in parts)*factor
+        imb = sum(b['imbalance'] for b in parts)*factor
         water = (first['liquidWater'] - last['liquidWater'])*factor
-        time = last['time']
     else:
-        b = ht.pendular_balances(log)[-1]
-        heatIn = -b['energy']['out']*factor
-        stored = b['energy']['stored']*factor
-        imb = b['energy']['imbalance']*factor
-        water = b['water']['out']*factor
-        time = b['time']
+        heatIn = -sum(b['energy']['out'] for b in parts)*factor
+        stored = sum(b['energy']['stored'] for b in parts)*factor
+        imb = sum(b['energy']['imbalance'] for b in parts)*factor
+        water = sum(b['water']['out'] for b in parts)*factor
+    time = last['time']
     w('Energy balance of the whole hearth at t = %.4g h:' % (time/3600))
     w('    heat in through the patches  %14.6g MJ' % (heatIn/1e6))
     w('    stored in the soil           %14.6g MJ' % (stored/1e6))
@@ -92,7 +96,10 @@ def main(case):
     w('    sensors.png, postProcessing/thermocouples/0/sensors.csv')
     w('    TMaxSection.png, TMaxSection.csv')
     w('    postProcessing/hearthAlteration/<time>/summary.csv')
-    w('    log.%s (balances), summary.txt, summary.csv' % solver)
+    w('    log.%s (balances%s), summary.txt, summary.csv' % (
+        solver, '' if len(parts) == 1 else
+        '; resumed: the parts up to %s s in log.%s.<time>'
+        % (', '.join('%g' % b['time'] for b in parts[:-1]), solver)))
     print('\n'.join(out))
     with open(os.path.join(case, 'summary.csv'), 'w') as f:
         f.write('name,value,unit\n')
