@@ -800,6 +800,126 @@ int main(int argc, char *argv[])
             floorErr, 0, 1e-4);
     }
 
+    // 4f. nearlyFull (issue 14): the two-phase cell c of 4d at 1 - S_l =
+    //     1e-8 with the unknown p_c instead of W (pendularResidual::
+    //     nearlyFull). (i) The same balances: its residual at the p_c of
+    //     the bothPhases state at W(1 - 1e-8), p_c(alpha_l(W)), against
+    //     that state's (the same liquid pressure; alpha_l = S(p_c) within
+    //     the bisection's 4 eps of S: bound 1e-6 of the largest |R|,
+    //     2.9e-16 measured; with p_c(1 - 1e-8) itself the two differ by
+    //     the W form's staircase in p_c, 7.9e-9 Pa here). (ii) Its forward-difference Jacobian
+    //     (pendularFoam's; the cell term's p_c step sqrt(eps) max(p_c, 1
+    //     Pa), the faces' sqrt(eps) max(p_c, 1e-4)) against a central
+    //     difference of the full residual with a step of 1e-3 p_c, every
+    //     column of c and of its neighbours: the liquid's fluxes are
+    //     linear in p_c; the storage's W(S(p_c)) moves by ~1e-16 of W
+    //     over the cell term's step (1.5e-8 Pa moves S by ~2e-15 here),
+    //     so its derivative carries a relative round-off of a few %, on
+    //     a term ~1e-3 of the column's largest (the fluxes'): the p_c
+    //     column measured 9.4e-5, bound 1e-3 for the cell's 3 columns
+    //     (the W column of the same cell in W, 4d: 0.099)
+    section("4f. nearlyFull cell (unknown p_c) at 1 - S = 1e-8");
+    {
+        label c = -1;
+        forAll(phases, ci)
+        {
+            if (phases[ci] == pendularResidual::bothPhases && c < 0)
+            {
+                c = ci;
+            }
+        }
+        const capillaryPressureModel& cap =
+            medium.liquidFlowPtr()->capillaryPressure();
+        scalarField xw(x);
+        const scalar Tc = xw[3*c];
+        const scalar Tl = res.liquidTemperature(Tc);
+        const scalar S = 1 - 1e-8;
+        xw[3*c + 2] = medium.waterContent(S, Tc, phi[c]);
+        scalarField xf(xw);
+        xf[3*c + 2] = cap.pc(S, Tl);
+        labelList phasesF(phases);
+        phasesF[c] = pendularResidual::nearlyFull;
+        pendularResidual resW
+        (
+            medium, T, p, pw, pRef, x0, alphaGuess, dt,
+            coupledResidual::differenceScheme::forward, phases
+        );
+        // (built with the phases of x0, whose cells hold W, as
+        // pendularNewton's residual; nearlyFull set after the old storage)
+        pendularResidual resP
+        (
+            medium, T, p, pw, pRef, x0, alphaGuess, dt,
+            coupledResidual::differenceScheme::forward, phases
+        );
+        resP.setPhases(phasesF);
+        // (p_c that of the bothPhases state, p_c(alpha_l(W)): the same
+        // liquid pressure; alpha_l then within the round-off of S)
+        xf[3*c + 2] = resW.liquidState(resW.state(c, &xw[3*c])).pc;
+        scalarField RW, RP;
+        resW.residual(xw, RW);
+        resP.residual(xf, RP);
+        Info<< "cell " << c << ": p_c " << xf[3*c + 2] << " Pa, alpha_l "
+            << resP.state(c, &xf[3*c]).alpha << ", W "
+            << resP.state(c, &xf[3*c]).W << " (" << xw[3*c + 2] << ")"
+            << endl;
+        checkAbs("nearlyFull residual vs bothPhases at the same S (rel)",
+            max(mag(RP - RW))/max(mag(RW)), 0, 1e-6);
+
+        blockSystem sysP(mesh, 3, mesh.solutionDict().subDict("coupled"));
+        resP.jacobian(xf, sysP);
+        labelList cols(1, c);
+        for (const label facei : mesh.cells()[c])
+        {
+            if (facei < mesh.nInternalFaces())
+            {
+                const label o = mesh.faceOwner()[facei];
+                cols.append(o == c ? mesh.faceNeighbour()[facei] : o);
+            }
+        }
+        scalar worst = 0, worstPc = 0, worstC = 0;
+        scalarField e(xf.size()), Je, Rp, Rm;
+        for (const label cj : cols)
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                const label g = 3*cj + k;
+                const scalar h =
+                    k == 0 ? 1e-4
+                  : k == 1 ? 1e-2
+                  : cj == c ? 1e-3*mag(xf[g])
+                  : phases[cj] == pendularResidual::liquidOnly
+                  ? 1e-3*max(mag(xf[g]), 1e-8)
+                  : 1e-6*max(mag(xf[g]), 1e-4);
+                e = Zero;
+                e[g] = 1;
+                sysP.multiply(e, Je);
+                scalarField xp(xf);
+                xp[g] += h;
+                resP.residual(xp, Rp);
+                xp[g] -= 2*h;
+                resP.residual(xp, Rm);
+                const scalarField fd((Rp - Rm)/(2*h));
+                const scalar err =
+                    max(mag(Je - fd))/max(max(mag(fd)), VSMALL);
+                if (cj == c)
+                {
+                    worstC = max(worstC, err);
+                }
+                worst = max(worst, err);
+                if (cj == c && k == 2)
+                {
+                    worstPc = err;
+                }
+            }
+        }
+        Info<< "p_c column of cell " << c << ": relative error " << worstPc
+            << "; its 3 columns " << worstC << "; the " << 3*cols.size()
+            << " columns of it and its neighbours (forward differences of"
+            << " the liquidOnly neighbours' X too) " << worst << endl;
+        checkAbs("nearlyFull cell's Jacobian columns vs central FD (rel)",
+            worstC, 0, 1e-3);
+    }
+
     // 4c. Newton on a liquid-only step: every cell liquidOnly, p_l 100 Pa
     //     above p_ref with 3 Pa variations (a liquid near the open top of
     //     a column; a face's Delta p small: the faces' steps, sqrt(eps)
