@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pendularNewton.H"
-#include "liquidFlow.H"
 #include "checkedRead.H"
 #include <cmath>
 #include <functional>
@@ -1686,59 +1685,11 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
                 // pTol: dW/dp_c = phi rho_l dS/dp_c, 1.6e-6 kg/m3/Pa at
                 // 1 - S = 2e-11 with van Genuchten n = 2)
                 u[1] = max(u[1], mag(dx[3*c + 2])/pTol_);
-                // An update across the bubble point (p_c <= p_c(1): the
-                // pores full) from a cell more than pTol above it: to
-                // 0.1 of its distance to p_c(1) (as the water's
-                // chop), so that the cell reaches the boundary before it
-                // leaves for liquidOnly (the updates overshot through it:
-                // p_c from 4e-3 to -12 Pa, then the 1e-4 gas seed back)
-                const scalar pc1 = medium.pcSaturated(x[3*c]);
-                const scalar pc = x[3*c + 2] + dx[3*c + 2];
-                // Nor beyond the p_c of 10 times the exit gas room (a
-                // step to p_c of S_r, where S(p_c) and W are flat, left
-                // a zero column: Newton diverged, tests/
-                // pendularSaturatedDrying's cells_20); the cell takes W
-                // at the next pass
-                const scalar pcOut =
-                    medium.liquidFlowPtr()->capillaryPressure().pc
-                    (
-                        1 - 10*pendularResidual::gasRoomOut,
-                        res.liquidTemperature(x[3*c])
-                    );
-                if (pc <= pc1 && x[3*c + 2] > pc1 + pTol_)
-                {
-                    ++nProjected;
-                    x[3*c + 2] = pc1 + 0.1*(x[3*c + 2] - pc1);
-                }
-                else if (pc > pcOut)
-                {
-                    ++nProjected;
-                    x[3*c + 2] = pcOut;
-                }
-                else
-                {
-                    x[3*c + 2] = pc;
-                }
+                x[3*c + 2] += dx[3*c + 2];
                 continue;
             }
             u[2] = max(u[2], mag(dx[3*c + 2])/WTolAbs_);
             const scalar W = x[3*c + 2] + dx[3*c + 2];
-            // (saturatedZone) An update that fills the pores of a cell
-            // with gas room above nearlyFull's: into that range, half its
-            // entry gas room below full, where the cell takes p_c as its
-            // unknown at the next pass (the updates overshot from the 1e-4
-            // gas seed to S_l - 1 = 3e-6, liquidOnly, and back)
-            const scalar WIn =
-                phi[c]*medium.rhoL()*(1 - 0.5*pendularResidual::gasRoomIn);
-            if
-            (
-                switching && W >= phi[c]*medium.rhoL() && x[3*c + 2] < WIn
-            )
-            {
-                ++nProjected;
-                x[3*c + 2] = WIn;
-                continue;
-            }
             // A wet cell's step across its kink (at the new T): to the
             // kink
             const scalar Wk = medium.kinkWater(phi[c], x[3*c]);

@@ -19,8 +19,8 @@
 #include "calculatedFvPatchFields.H"
 #include "unitConversion.H"
 
-const Foam::scalar Foam::pendularResidual::gasRoomIn = 1e-6;
-const Foam::scalar Foam::pendularResidual::gasRoomOut = 1e-5;
+const Foam::scalar Foam::pendularResidual::gasRoomIn = 1e-9;
+const Foam::scalar Foam::pendularResidual::gasRoomOut = 1e-8;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
