@@ -296,13 +296,7 @@ Foam::scalar Foam::pendularNewton::gasRoundOff
     // their difference with S
     scalar S[3];
     res.cellTerm(c, &x[3*c], S);
-    const scalar Wnew =
-        sW
-       *(
-            res.phases()[c] == pendularResidual::nearlyFull
-          ? res.state(c, &x[3*c]).W
-          : x[3*c + 2]
-        );
+    const scalar Wnew = sW*x[3*c + 2];
     const scalar Anew = sG*(x[3*c + 1] + pRef);
     scalar sum = mag(Wnew) + mag(Wnew - S[0]) + mag(Anew) + mag(Anew - S[1]);
 
@@ -550,13 +544,7 @@ bool Foam::pendularNewton::cellValid
           ? p > -GREAT : p > 0
         )
      && p < GREAT
-     && (
-            res.phases()[c] == pendularResidual::nearlyFull
-            // (p_c: any finite value; at or below p_c(1) the cell turns
-            // bothPhases at S = 1 at the next pass)
-          ? mag(W) < GREAT
-          : W >= 0 && W < GREAT
-        );
+     && W >= 0 && W < GREAT;
 }
 
 
@@ -1076,8 +1064,6 @@ Foam::pendularNewton::result Foam::pendularNewton::solve
 )
 {
     const result r = iterate(res, x, pRef, limitChopRuns);
-    // (the caller's fields hold W: nearlyFull cells back to it)
-    res.saturationForm(x);
     airGuardsStep_[0] += r.airLost;
     airGuardsStep_[1] += r.nAirProjected;
     airGuardsStep_[2] += r.nChordAirGuard;
@@ -1676,16 +1662,6 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
                 {
                     x[3*c + 2] = X;
                 }
-                continue;
-            }
-            if (res.phases()[c] == pendularResidual::nearlyFull)
-            {
-                // p_c: judged by pTol, no kink, no chop (its storage
-                // W(S(p_c)) moves by less than the water's tolerance over
-                // pTol: dW/dp_c = phi rho_l dS/dp_c, 1.6e-6 kg/m3/Pa at
-                // 1 - S = 2e-11 with van Genuchten n = 2)
-                u[1] = max(u[1], mag(dx[3*c + 2])/pTol_);
-                x[3*c + 2] += dx[3*c + 2];
                 continue;
             }
             u[2] = max(u[2], mag(dx[3*c + 2])/WTolAbs_);

@@ -19,10 +19,6 @@
 #include "calculatedFvPatchFields.H"
 #include "unitConversion.H"
 
-const Foam::scalar Foam::pendularResidual::gasRoomIn = 1e-9;
-const Foam::scalar Foam::pendularResidual::gasRoomOut = 1e-8;
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pendularResidual::pendularResidual
@@ -85,7 +81,6 @@ Foam::pendularResidual::pendularResidual
     nbrPhase_(),
     liquidBoundaryCell_(),
     liquidOnlyScales_(xScale()),
-    nearlyFullScales_(xScale()),
     nonOrthCorrected_(meshNonOrthogonality::New(fvMesh_).corrected()),
     snGradCorr_(),
     deltaCoeffs_()
@@ -104,7 +99,6 @@ Foam::pendularResidual::pendularResidual
     if (medium_.saturatedZone())
     {
         liquidOnlyScales_[1] = 1/medium_.storage();
-        nearlyFullScales_[2] = 1;
     }
 
     // No state cached yet: keys no unknown can take
@@ -304,18 +298,14 @@ void Foam::pendularResidual::setPhases(const labelList& phases)
         if
         (
             phases[celli] != bothPhases
-         && !(
-                (phases[celli] == liquidOnly || phases[celli] == nearlyFull)
-             && medium_.saturatedZone()
-            )
+         && !(phases[celli] == liquidOnly && medium_.saturatedZone())
         )
         {
             FatalErrorInFunction
                 << "pendularResidual::setPhases: cell " << celli
                 << " phase state " << phases[celli] << "; valid: "
                 << label(bothPhases) << " (bothPhases), "
-                << label(liquidOnly) << " (liquidOnly), "
-                << label(nearlyFull) << " (nearlyFull; with liquidFlow's"
+                << label(liquidOnly) << " (liquidOnly, with liquidFlow's"
                 << " saturatedZone only)" << exit(FatalError);
         }
     }
@@ -323,28 +313,6 @@ void Foam::pendularResidual::setPhases(const labelList& phases)
     labelList newPhases(phases);
     phase_.transfer(newPhases);
     syncTools::swapBoundaryCellList(fvMesh_, phase_, nbrPhase_);
-}
-
-
-void Foam::pendularResidual::saturationForm(scalarField& x)
-{
-    labelList phases(phase_);
-    forAll(phases, c)
-    {
-        if (phases[c] == nearlyFull)
-        {
-            scalar* xc = &x[3*c];
-            const scalar alpha =
-                medium_.liquidFlowPtr()->capillaryPressure().saturation
-                (
-                    xc[2], liquidTemperature(xc[0])
-                );
-            xc[2] =
-                medium_.waterContent(alpha, xc[0], medium_.porosity()[c]);
-            phases[c] = bothPhases;
-        }
-    }
-    setPhases(phases);
 }
 
 
@@ -356,8 +324,6 @@ const Foam::scalar* Foam::pendularResidual::cellTermStepScales
     return
         phase_[celli] == liquidOnly
       ? liquidOnlyScales_.cdata()
-      : phase_[celli] == nearlyFull
-      ? nearlyFullScales_.cdata()
       : coupledResidual::cellTermStepScales(celli);
 }
 
@@ -466,10 +432,6 @@ bool Foam::pendularResidual::phaseConsistent
         const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
         return (x[2]/phi - rhoW1)/(rhoL - rhoW1) < 1;
     }
-    if (phase_[celli] == nearlyFull)
-    {
-        return x[2] > medium_.pcSaturated(T);
-    }
     const scalar pn = x[1] + pRef_ + medium_.pcSaturated(T);
     return pn > 0 && pw1 + medium_.airPressure(x[2], T) <= pn;
 }
@@ -496,37 +458,15 @@ Foam::label Foam::pendularResidual::switchPhases
     // The band h_p, relative to the pressure (see the header: above the
     // straddle measured at the bubble point, 31 Pa at 1 atm)
     const scalar hp = 1e-3;
-    const capillaryPressureModel* cap =
-        medium_.saturatedZone()
-      ? &medium_.liquidFlowPtr()->capillaryPressure()
-      : nullptr;
     for (label c = 0; c < n && medium_.saturatedZone(); ++c)
     {
         scalar* xc = &x[3*c];
         const scalar phi = medium_.porosity()[c];
         const scalar T = xc[0];
-        const scalar Tl = liquidTemperature(T);
         const bool wide = hysteresis && heldBefore[c];
         const scalar pw1 = medium_.saturatedVapourPressure(T);
         const scalar pc1 = medium_.pcSaturated(T);
-        if (phase_[c] == nearlyFull)
-        {
-            // p_c -> W where the gas room is no longer small, or where
-            // the pores are full (then judged below as a bothPhases cell
-            // at S = 1)
-            const scalar alpha = cap->saturation(xc[2], Tl);
-            if (xc[2] <= pc1 || 1 - alpha > gasRoomOut)
-            {
-                xc[2] =
-                    medium_.waterContent(xc[2] <= pc1 ? 1 : alpha, T, phi);
-                phases[c] = bothPhases;
-            }
-            else
-            {
-                continue;
-            }
-        }
-        if (phases[c] == bothPhases)
+        if (phase_[c] == bothPhases)
         {
             const scalar rhoW1 = medium_.Mw()*pw1/(medium_.R()*T);
             const scalar S = (xc[2]/phi - rhoW1)/(rhoL - rhoW1);
@@ -540,21 +480,6 @@ Foam::label Foam::pendularResidual::switchPhases
                 switched[c] = true;
                 ++nSwitched;
             }
-            else if (S < 1 && phase_[c] == bothPhases)
-            {
-                // W -> p_c where the gas room is small (the liquid
-                // fraction of the saturation form's inversion)
-                const scalar alpha =
-                    medium_.alphaL
-                    (
-                        xc[2], saturation(c, T), phi, alphaOld_[c]
-                    );
-                if (alpha < 1 && 1 - alpha < gasRoomIn)
-                {
-                    xc[2] = cap->pc(alpha, Tl);
-                    phases[c] = nearlyFull;
-                }
-            }
         }
         else
         {
@@ -565,7 +490,17 @@ Foam::label Foam::pendularResidual::switchPhases
             {
                 const scalar alpha = 1 - gasSeed;
                 xc[2] = medium_.waterContent(alpha, T, phi);
-                xc[1] = xc[1] + cap->pc(alpha, Tl);
+                xc[1] =
+                    xc[1]
+                  + medium_.liquidFlowPtr()->capillaryPressure().pc
+                    (
+                        alpha,
+                        min
+                        (
+                            max(T, medium_.minimumTemperature()),
+                            medium_.dryOutTemperature()
+                        )
+                    );
                 phases[c] = bothPhases;
                 switched[c] = true;
                 ++nSwitched;
@@ -1234,27 +1169,6 @@ Foam::pendularResidual::cellState Foam::pendularResidual::state
                 medium_, phi, x[0], x[1] + pRef_, x[2]
             );
     }
-    if (phase == nearlyFull)
-    {
-        // (T, p_g - p_ref, p_c): the saturation form's state at alpha_l =
-        // S(p_c, T), its liquid at the unknown p_c
-        const scalar pc = x[2];
-        const scalar alpha =
-            medium_.liquidFlowPtr()->capillaryPressure().saturation
-            (
-                pc, liquidTemperature(x[0])
-            );
-        cellState s =
-            pendularState::closure
-            (
-                medium_, phi, x[0], x[1] + pRef_,
-                medium_.waterContent(alpha, sat, phi), alpha,
-                medium_.vapourDensity(alpha, sat)
-            );
-        s.pcKnown = true;
-        s.pc = pc;
-        return s;
-    }
     // The water model's split of W (as pendularState::update() over the
     // sub-step): model A the liquid fraction holding W at T and the vapour
     // in Kelvin-Laplace equilibrium with it (alphaOld the guess of the
@@ -1716,12 +1630,6 @@ Foam::liquidDarcyFlux::liquidState Foam::pendularResidual::liquidState
         (
             s.p, s.alpha, liquidTemperature(s.T)
         );
-    if (s.pcKnown)
-    {
-        // nearlyFull: the unknown p_c, not p_c(alpha_l) of its rounded
-        // alpha_l
-        l.pc = s.pc;
-    }
     // A cell without liquid (alpha_l = 0: above T_d; below it the
     // Kelvin-Laplace state keeps alpha_l > 0) gives none, whatever the
     // relative permeability law says at S = 0: the upwind k_rl of a flux

@@ -700,8 +700,6 @@ Foam::pendularState::cellState Foam::pendularState::closure
     s.A = phi*(1 - alpha)*s.rhoA;
     s.X = 0;
     s.liquidOnly = false;
-    s.pcKnown = false;
-    s.pc = 0;
     if (medium.saturatedZone())
     {
         // Henry's dissolved air in the liquid, with its enthalpy
@@ -748,8 +746,6 @@ Foam::pendularState::cellState Foam::pendularState::liquidOnlyClosure
     s.A = s.W*X;
     s.E = medium.energy(T, s.W, 1, s.rhoW, s.pa, phi) + s.A*s.hA;
     s.liquidOnly = true;
-    s.pcKnown = false;
-    s.pc = 0;
     return s;
 }
 
