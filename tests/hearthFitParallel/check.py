@@ -74,7 +74,9 @@ c.le('cost |parallel - serial|/serial (%.10g, %.10g)' % (cp, cs),
 
 for name, msg in (('nProcs0', r"Keyword 'nProcs' = 0 is outside its valid range \[1, inf\)"),
                   ('nProcs3', 'nProcs 3 but .*decomposeParDict"? has '
-                              'numberOfSubdomains 2')):
+                              'numberOfSubdomains 2'),
+                  ('parallel1', "'launcher' = .*-parallel with nProcs 1"),
+                  ('background', "'launcher' = .*ends in '&'")):
     with open('bad/log.' + name) as f:
         txt = f.read()
     c.true('bad input %s: error "%s"' % (name, msg),

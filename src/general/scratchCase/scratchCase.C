@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "scratchCase.H"
+#include <cctype>
 #include "Time.H"
 #include "OSspecific.H"
 #include "OFstream.H"
@@ -613,6 +614,41 @@ Foam::string Foam::scratchCase::launcher
             "nProcs " + std::to_string(nProcs) + " > 1 but no -parallel"
             " for the solver"
         );
+    }
+    // -parallel on 1 rank: OpenFOAM aborts each run ('attempt to run
+    // parallel on 1 processor'); a command ending in & returns before the
+    // solver ends (doc/hostileTesting-2026-12-05b.md, finding 6)
+    {
+        const std::string flag(" -parallel");
+        const std::string::size_type p = launcher.find(flag);
+        const std::string::size_type q = p + flag.size();
+        if
+        (
+            nProcs <= 1 && p != std::string::npos
+         && (q == launcher.size() || std::isspace(launcher[q]))
+        )
+        {
+            bad
+            (
+                "-parallel with nProcs " + std::to_string(nProcs)
+              + " (OpenFOAM aborts a -parallel run on 1 processor): give"
+                " nProcs > 1 with a decomposeParDict, or no -parallel"
+            );
+        }
+        const std::string::size_type last =
+            launcher.find_last_not_of(" \t");
+        if
+        (
+            last != std::string::npos && launcher[last] == '&'
+         && (last == 0 || launcher[last - 1] != '&')
+        )
+        {
+            bad
+            (
+                "it ends in '&': the run would go to the background and"
+                " hearthFit would read its output before the solver ends"
+            );
+        }
     }
 
     // Its command (not the solver, not an environment assignment VAR=x)

@@ -411,6 +411,73 @@ bool Foam::pendularMedium::liquidNearCritical
 }
 
 
+void Foam::pendularMedium::checkInitialCapillaryPressure
+(
+    const volScalarField& T,
+    const volScalarField& p,
+    const volScalarField& alphaL,
+    const label celli
+) const
+{
+    const capillaryPressureModel& law = liquidFlow_->capillaryPressure();
+    const dictionary& lfDict = closures_.subDict("liquidFlow");
+    const scalar a = alphaL[celli];
+    dictionary fieldDict;
+    fieldDict.name() = alphaL.objectPath();
+    const word who("capillaryPressureModel " + law.type());
+
+    // At or below S_wr a law unbounded there has no p_c (checkedSe's
+    // FatalError at the first step, naming no file, before)
+    if (a <= law.saturation().Swr() && !law.finiteAtResidual())
+    {
+        FatalIOErrorInFunction(fieldDict)
+            << "Field '" << alphaL.name() << "' (keyword 'internalField') = "
+            << a << " in cell " << celli << " is at or below the residual"
+            << " saturation Swr = " << law.saturation().Swr() << " of "
+            << who.c_str() << " in " << lfDict.name() << ", whose capillary"
+            << " pressure is unbounded there, in file "
+            << alphaL.objectPath() << nl
+            << "    Valid: alphaL in (Swr, 1] where it is not 0, or"
+            << " pcLinearBelowSe (in (0, 0.5]) in " << lfDict.name()
+            << ", or a law bounded at Swr (leverettJ, pendular)"
+            << exit(FatalIOError);
+    }
+    // p_c beyond the floating-point range (van Genuchten's n near 1)
+    if (!law.finite(a))
+    {
+        FatalIOErrorInFunction(fieldDict)
+            << "Field '" << alphaL.name() << "' (keyword 'internalField') = "
+            << a << " in cell " << celli << ": the capillary pressure of "
+            << who.c_str() << " (" << lfDict.name() << ") there exceeds"
+            << " 1e300 Pa, beyond the floating-point range, in file "
+            << alphaL.objectPath() << nl
+            << "    Valid: p_l = p_g - p_c(alphaL) in p_l's range ["
+            << Foam::name(liquidFlow::plMin()) << ", 1e+08] Pa: check the"
+            << " law's coefficients (van Genuchten: n not so close to 1)"
+            << exit(FatalIOError);
+    }
+    // p_l = p_g - p_c in p_l's range (the law at T held in its range, as
+    // in the steps)
+    const scalar Tc =
+        min(max(T[celli], minimumTemperature_), dryOutTemperature_);
+    const scalar pc = law.pc(a, Tc);
+    if (!(p[celli] - pc >= liquidFlow::plMin()))
+    {
+        FatalIOErrorInFunction(fieldDict)
+            << "Field '" << alphaL.name() << "' (keyword 'internalField') = "
+            << a << " in cell " << celli << ": the capillary pressure of "
+            << who.c_str() << " (" << lfDict.name() << ") there, p_c = "
+            << pc << " Pa, gives p_l = p_g - p_c = " << p[celli] - pc
+            << " Pa, in file " << alphaL.objectPath() << nl
+            << "    Valid: p_l in p_l's range ["
+            << Foam::name(liquidFlow::plMin()) << ", 1e+08] Pa (the Kelvin"
+            << " limit of an oven-dry soil): a wetter start, or the law's"
+            << " coefficients (van Genuchten: n not so close to 1)"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::pendularMedium::checkInitialState
 (
     const volScalarField& T,
@@ -494,6 +561,10 @@ void Foam::pendularMedium::checkInitialState
                 << dryOutTemperature_ - criticalMargin
                 << " K (the liquid vanishes at the critical point)"
                 << exit(FatalIOError);
+        }
+        if (liquidFlow_.valid())
+        {
+            checkInitialCapillaryPressure(T, p, alphaL, celli);
         }
         const saturationState sat = saturation(T[celli]);
         const scalar pw = vapourDensity(a, sat)*R()*T[celli]/Mw();

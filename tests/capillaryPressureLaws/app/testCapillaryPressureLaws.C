@@ -390,6 +390,30 @@ void testBadInput()
         {"vanGenuchten", "nan", "[0, 1]"});
     checkThrows("vG at S = Swr (unbounded)", [&](){ vg->pc(0.1, 300); },
         {"vanGenuchten", "unbounded", "Swr = 0.1", "(0.1, 1]"});
+    // n near 1: S_e^(-1/m), 1/m = n/(n - 1) = 1001, overflows at S_e =
+    // 0.06 (a SIGFPE under FE_OVERFLOW before finiteEff,
+    // doc/hostileTesting-2026-12-05b.md finding 1); regularised, at S_r
+    auto vgSteep = model
+    (
+        "capillaryPressureModel vanGenuchten;"
+        "vanGenuchtenCoeffs { alpha 1.48e-3; n 1.001; }"
+    );
+    checkTrue("vG n = 1.001: finite(0.06) false, finite(0.9) true",
+        !vgSteep->finite(0.06) && vgSteep->finite(0.9), 0, 0, "finite");
+    checkTrue("vG n = 2: finite(Swr + 1e-6) true",
+        vg->finite(0.1 + 1e-6), 0, 0, "finite");
+    checkThrows("vG n = 1.001 at S = 0.06 (overflow)",
+        [&](){ vgSteep->pc(0.06, 300); },
+        {"vanGenuchten", "vanGenuchtenCoeffs", "S = 0.06", "1e300"}, true);
+    checkThrows("vG n = 1.001 dpc/dS at S = 0.06 (overflow)",
+        [&](){ vgSteep->dpcdS(0.06, 300); },
+        {"vanGenuchten", "floating-point range"}, true);
+    checkThrows("vG n = 1.001 regularised below S_e = 0.01 (overflow at S_r)",
+        [](){ model("capillaryPressureModel vanGenuchten;"
+            " pcLinearBelowSe 0.01;"
+            "vanGenuchtenCoeffs { alpha 1.48e-3; n 1.001; }")->pc(0.005, 300);
+        },
+        {"vanGenuchten", "S = 0.005", "pcLinearBelowSe"}, true);
     checkThrows("unknown model",
         [](){ model("capillaryPressureModel vanGenuchtn;"); },
         {"vanGenuchtn", "brooksCorey", "leverettJ", "pendular",

@@ -51,7 +51,31 @@ Foam::scalar Foam::capillaryPressureModel::checkedSe(const scalar S) const
             << saturation_.Swr() << ", 1]" << nl
             << exit(FatalError);
     }
+    if (!finiteEff(linear(Se) ? SeLinear_ : Se))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << who.c_str() << " (coefficients in " << coeffs_.name()
+            << ") evaluated at S = " << S << " (S_e = " << Se << "): its"
+            << " capillary pressure or its derivative exceeds 1e300 Pa,"
+            << " beyond the floating-point range (and p_l's [-1e9, 1e8] Pa"
+            << " by far)" << nl
+            << "    Valid: coefficients whose p_c stays finite over the"
+            << " saturations of the run (van Genuchten: n not so close to"
+            << " 1), or pcLinearBelowSe above this S_e" << nl
+            << exit(FatalIOError);
+    }
     return Se;
+}
+
+
+bool Foam::capillaryPressureModel::finite(const scalar S) const
+{
+    const scalar Se = saturation_.Se(S, "capillaryPressureModel " + type());
+    if (Se <= 0 && !finiteAtResidual())
+    {
+        return false;
+    }
+    return finiteEff(linear(Se) ? SeLinear_ : Se);
 }
 
 

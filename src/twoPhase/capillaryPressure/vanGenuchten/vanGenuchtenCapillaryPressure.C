@@ -63,6 +63,29 @@ Foam::scalar Foam::capillaryPressureModels::vanGenuchten::pcEff
 }
 
 
+bool Foam::capillaryPressureModels::vanGenuchten::finiteEff
+(
+    const scalar Se
+) const
+{
+    if (Se >= 1)
+    {
+        return true;
+    }
+    // ln of x = S_e^(-1/m), of x/S_e (dpcdSeEff's first product), of p_c
+    // <= x^(1/n)/alpha and of |dp_c/dS_e| <= x^(1/n)/(S_e alpha m n) (x >
+    // 1: (x - 1)^(1/n - 1) <= x^(1/n - 1) when x - 1 >= 1; near S_e = 1,
+    // where x - 1 is small, the terms are far below the bound)
+    const scalar lnSe = std::log(Se);
+    const scalar lnX = -lnSe/m_;
+    const scalar lnMax = std::log(1e300);
+    return
+        lnX - lnSe < lnMax
+     && lnX/n_ - std::log(alpha_) < lnMax
+     && lnX/n_ - lnSe - std::log(alpha_*m_*n_) < lnMax;
+}
+
+
 Foam::scalar Foam::capillaryPressureModels::vanGenuchten::dpcdSeEff
 (
     const scalar Se,
