@@ -50,6 +50,30 @@ Foam::string entryText(const Foam::entry& e)
 }
 
 
+//- Start the FatalIOError of an unknown keyword, e, of dict: the file and
+//  line, the function that found it (checkKeywords, checkNearMisses),
+//  "Unknown keyword 'key' (line N)"; the caller ends the message
+void unknownKeywordHead
+(
+    const char* function,
+    const int sourceLine,
+    const Foam::dictionary& dict,
+    const Foam::entry& e
+)
+{
+    using namespace Foam;
+    const label line = e.startLineNumber();
+    FatalIOError
+    (
+        function, __FILE__, sourceLine, dict.name(), line > 0 ? line : -1, -1
+    )   << "Unknown keyword '" << e.keyword() << "'";
+    if (line > 0)
+    {
+        FatalIOError << " (line " << line << ")";
+    }
+}
+
+
 //- FatalIOError: keyword missing from dict, with what was expected and a
 //  near miss among the keywords given (a misspelt keyword) if there is one
 void missingKeyword
@@ -628,17 +652,7 @@ void Foam::checkedRead::checkKeywords
         }
 
         const word near(nearest(key, allowed));
-        const label line = e.startLineNumber();
-
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
-            line > 0 ? line : -1, -1
-        )   << "Unknown keyword '" << key << "'";
-        if (line > 0)
-        {
-            FatalIOError << " (line " << line << ")";
-        }
+        unknownKeywordHead(FUNCTION_NAME, __LINE__, dict, e);
         FatalIOError << " in dictionary " << dict.name();
         if (where.size())
         {
@@ -708,16 +722,7 @@ void Foam::checkedRead::checkNearMisses
             // Far from all of ours: the user's own entry
             continue;
         }
-        const label line = e.startLineNumber();
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
-            line > 0 ? line : -1, -1
-        )   << "Unknown keyword '" << key << "'";
-        if (line > 0)
-        {
-            FatalIOError << " (line " << line << ")";
-        }
+        unknownKeywordHead(FUNCTION_NAME, __LINE__, dict, e);
         FatalIOError
             << " in " << dict.name() << ": did you mean '" << near << "'?"
             << " (OpenFOAM ignores an unknown entry, the default of '"

@@ -264,10 +264,13 @@ Foam::scalarField Foam::forwardModel::run
 
     if (scratchCase::interrupted())
     {
+        // Exit status 128 + signal, as hearthFit's and a shell's (130 for
+        // Ctrl-C)
+        const int sig = scratchCase::interrupted();
         FatalErrorInFunction
-            << "Interrupted (signal " << scratchCase::interrupted()
-            << ") during forward run " << runIndex << ": the solver was"
-            << " killed" << exit(FatalError);
+            << "Interrupted (signal " << sig << ") during forward run "
+            << runIndex << ": the solver was killed"
+            << exit(FatalError, 128 + sig);
     }
     if (why.size())
     {

@@ -20,6 +20,10 @@ namespace
 void finaliseMpi()
 {
     #if defined(OPENFOAM) && (OPENFOAM >= 2006)
+    // v2006 and later (read in ESI's sources of v2006, v2106, v2406; not
+    // compiled here): public 'static void shutdown(int errNo = 0)', MPI
+    // finalised (MPI_Abort only for errNo != 0); UPstream::exit(errNo) is
+    // shutdown(errNo), then std::exit(errNo)
     Foam::UPstream::shutdown(0);
     #else
     // v1912: UPstream::exit(0)'s steps on public MPI calls: the buffer

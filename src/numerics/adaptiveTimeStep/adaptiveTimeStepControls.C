@@ -42,8 +42,7 @@ Foam::adaptiveTimeStepControls::adaptiveTimeStepControls
     minDeltaT_(1e-6),
     maxDeltaTemperature_(defaultMaxDeltaTemperature),
     maxDeltaTGrowth_(defaultMaxDeltaTGrowth),
-    maxIter_(defaultMaxIter),
-    maxIterWarned_(false)
+    maxIter_(defaultMaxIter)
 {
     read();
 }
@@ -180,23 +179,6 @@ void Foam::adaptiveTimeStepControls::read()
         (
             nonlinearDict, "maxIter", defaultMaxIter_, 2
         );
-    // maxIter 2 or 3: a sub-step that takes more than maxIter/2 = 1
-    // iteration shrinks the next step by 0.7 (stepFactor), and only a
-    // first iterate already within the tolerances converges in 1: the step
-    // stays small (hostile testing 2026-12-05: tutorials/column1D on 20
-    // cells held at ~1e-3 s with maxIter 2 and 3)
-    if (maxIter_ < 4 && !maxIterWarned_)
-    {
-        maxIterWarned_ = true;
-        WarningInFunction
-            << "nonlinear { maxIter " << maxIter_ << "; } in "
-            << nonlinearDict.name() << ": a sub-step of more than"
-            << " maxIter/2 = " << maxIter_/2 << " iteration shrinks the next"
-            << " step to 0.7 of it, and a sub-step converges in one"
-            << " iteration only when its first iterate is within the"
-            << " tolerances: the time step will stay small. maxIter 4 or"
-            << " more lets steps of 2 iterations grow" << endl;
-    }
 }
 
 
@@ -213,7 +195,7 @@ Foam::scalar Foam::adaptiveTimeStepControls::stepFactor
             maxDeltaTemperature_/max(lastMaxChange, SMALL)
         );
 
-    if (lastIterations > maxIter_/2)
+    if (lastIterations > shrinkIterations())
     {
         factor = min(factor, 0.7);
     }

@@ -64,12 +64,27 @@ Foam::label Foam::subStepController::hold() const
 }
 
 
+void Foam::subStepController::belowMinDeltaTHead
+(
+    const char* function,
+    const int sourceLine,
+    const char* what,
+    const scalar deltaT
+) const
+{
+    FatalError(function, __FILE__, sourceLine)
+        << what << " deltaT = " << deltaT << " < minDeltaT = "
+        << controls_.minDeltaT();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::subStepController::setDeltaT(Time& runTime) const
 {
     // The next step below minDeltaT (the next-step rule shrinks it, e.g. by
-    // 0.7 after every sub-step of more than maxIter/2 iterations): stopped
+    // 0.7 after every sub-step of more than max(maxIter/2, 2) iterations,
+    // adaptiveTimeStepControls::shrinkIterations): stopped
     // before it is set (Time::adjustDeltaT divides by it)
     if
     (
@@ -116,23 +131,20 @@ void Foam::subStepController::shrunkBelowMinDeltaT
     const string& when
 ) const
 {
-    FatalErrorInFunction
-        << "Time step shrunk to deltaT = " << deltaT << " < minDeltaT = "
-        << controls_.minDeltaT() << " " << when.c_str()
+    const bool shrunk = lastIterations_ > controls_.shrinkIterations();
+    belowMinDeltaTHead(FUNCTION_NAME, __LINE__, "Time step shrunk to", deltaT);
+    FatalError
+        << " " << when.c_str()
         << " by the next-step rule (no rejection): the last accepted"
         << " sub-step of " << lastDeltaT_ << " s took " << lastIterations_
         << " nonlinear iterations ("
         << (
-               lastIterations_ > controls_.maxIter()/2
-             ? "more than maxIter/2 = "
-             : "not limiting: at most maxIter/2 = "
+               shrunk
+             ? "more than max(maxIter/2, 2) = "
+             : "not limiting: at most max(maxIter/2, 2) = "
            )
-        << controls_.maxIter()/2
-        << (
-               lastIterations_ > controls_.maxIter()/2
-             ? ": the next step at most 0.7 of it)"
-             : ")"
-           )
+        << controls_.shrinkIterations()
+        << (shrunk ? ": the next step at most 0.7 of it)" : ")")
         << " and changed T by up to " << lastMaxChange_
         << " K (maxDeltaTemperature " << controls_.maxDeltaTemperature()
         << " K)";
@@ -264,10 +276,11 @@ void Foam::subStepController::failedBelowMinDeltaT
     const string& advice
 ) const
 {
-    FatalErrorInFunction
-        << "Nonlinear iterations failed with deltaT = " << dt_
-        << " < minDeltaT = " << controls_.minDeltaT() << " at time "
-        << runTime.timeName() << nl;
+    belowMinDeltaTHead
+    (
+        FUNCTION_NAME, __LINE__, "Nonlinear iterations failed with", dt_
+    );
+    FatalError << " at time " << runTime.timeName() << nl;
     FatalError << "    Last rejection: ";
     if (!lastRejection_.empty())
     {

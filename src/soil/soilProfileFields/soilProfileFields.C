@@ -245,6 +245,35 @@ static bool firstBad
 }
 
 
+//- At the first bad cell (firstBad's depth dBad, on any rank): its piece
+//  (pieceOfCell) and the value of field there, the same on every rank
+static void atFirstBad
+(
+    const scalarField& depth,
+    const boolList& bad,
+    const scalar dBad,
+    const labelList& pieceOfCell,
+    const scalarField& field,
+    label& piece,
+    scalar& value
+)
+{
+    piece = -1;
+    value = -GREAT;
+    forAll(depth, celli)
+    {
+        if (bad[celli] && depth[celli] == dBad)
+        {
+            piece = pieceOfCell[celli];
+            value = field[celli];
+            break;
+        }
+    }
+    reduce(piece, maxOp<label>());
+    reduce(value, maxOp<scalar>());
+}
+
+
 //- Evaluate the pieces of one property at the cell depths
 static tmp<scalarField> evaluate
 (
@@ -410,14 +439,15 @@ static void checkRange
     const string& upperSource
 )
 {
+    const scalarField rangeUpper
+    (
+        upper ? *upper : scalarField(values.size(), prop.range.upper)
+    );
     boolList bad(values.size(), false);
     forAll(values, celli)
     {
         validRange r = prop.range;
-        if (upper)
-        {
-            r.upper = (*upper)[celli];
-        }
+        r.upper = rangeUpper[celli];
         bad[celli] = !r.contains(values[celli]);
     }
 
@@ -425,19 +455,9 @@ static void checkRange
     vector CBad;
     if (firstBad(depth, values, bad, centres, dBad, vBad, CBad))
     {
-        label i = -1;
-        scalar up = -GREAT;
-        forAll(depth, celli)
-        {
-            if (bad[celli] && depth[celli] == dBad)
-            {
-                i = pieceOfCell[celli];
-                up = upper ? (*upper)[celli] : prop.range.upper;
-                break;
-            }
-        }
-        reduce(i, maxOp<label>());
-        reduce(up, maxOp<scalar>());
+        label i;
+        scalar up;
+        atFirstBad(depth, bad, dBad, pieceOfCell, rangeUpper, i, up);
         const profilePiece& p = pieces[max(i, 0)];
 
         validRange r = prop.range;
@@ -556,19 +576,9 @@ void Foam::soilProfileFields::checkPorosityHoldsWater() const
     vector CBad;
     if (firstBad(depth_, por, bad, centres, dBad, vBad, CBad))
     {
-        label i = -1;
-        scalar w = -GREAT;
-        forAll(depth_, celli)
-        {
-            if (bad[celli] && depth_[celli] == dBad)
-            {
-                i = pieceOfCell_[iPor][celli];
-                w = water[celli];
-                break;
-            }
-        }
-        reduce(i, maxOp<label>());
-        reduce(w, maxOp<scalar>());
+        label i;
+        scalar w;
+        atFirstBad(depth_, bad, dBad, pieceOfCell_[iPor], water, i, w);
         const profilePiece& p = pieces_[iPor][max(i, 0)];
         FatalIOErrorInFunction(*p.dict)
             << "Keyword '" << p.keyword << "' (" << p.path.c_str()
