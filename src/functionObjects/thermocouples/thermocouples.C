@@ -471,6 +471,23 @@ Foam::functionObjects::thermocouples::thermocouples
 }
 
 
+Foam::fileName Foam::functionObjects::thermocouples::sensorFilePath
+(
+    const dictionary& foDict,
+    const fileName& caseDir
+)
+{
+    fileName file(foDict.get<fileName>("file"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = caseDir/file;
+    }
+    file.clean();
+    return file;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::fileName Foam::functionObjects::thermocouples::csvFile() const
@@ -510,14 +527,7 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     }
 
     // Settings
-    fileName file(dict.get<fileName>("file"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = mesh_.time().globalPath()/file;
-    }
-    file.clean();
-    sensorFile_ = file;
+    sensorFile_ = sensorFilePath(dict, mesh_.time().globalPath());
 
     fieldName_ = dict.getOrDefault<word>("field", "T");
 
