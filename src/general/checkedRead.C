@@ -17,6 +17,8 @@
 #include "OSspecific.H"
 #include "Pstream.H"
 #include "stringOps.H"
+#include "Time.H"
+#include "TableBase.H"
 
 #include <cctype>
 #include <cfenv>
@@ -889,6 +891,37 @@ void Foam::checkedRead::checkAirTemperature
             << minAirTemperature << ", inf) K";
     }
     FatalIOError << nl << exit(FatalIOError);
+}
+
+
+Foam::scalarList Foam::checkedRead::function1CheckTimes
+(
+    const Function1<scalar>& f,
+    const Time& runTime,
+    const label nSamples
+)
+{
+    const scalar t0 = runTime.timeToUserTime(runTime.startTime().value());
+    const scalar t1 =
+        max(t0, runTime.timeToUserTime(runTime.endTime().value()));
+
+    DynamicList<scalar> times;
+    times.append(t0);
+    const auto* table =
+        dynamic_cast<const Function1Types::TableBase<scalar>*>(&f);
+    if (table)
+    {
+        times.append(table->x());
+    }
+    else
+    {
+        for (label i = 1; i < nSamples; ++i)
+        {
+            times.append(t0 + (t1 - t0)*i/nSamples);
+        }
+    }
+    times.append(t1);
+    return scalarList(std::move(times));
 }
 
 

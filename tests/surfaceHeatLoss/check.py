@@ -212,7 +212,9 @@ c.true('(a) h = 0, emissivity 0 patch (bottom) is zero-flux',
 # keyword and the valid range
 for case, words in (
     ('badEmissivity', ["'emissivity' = 1.5", "patch 'surface'", '[0, 1]']),
-    ('badH', ["'h' = -5", '(time 100)', "patch 'surface'", '[0, inf)']),
+    # (h's table checked over the whole run before any step: its row at
+    # 50 s; before 2026-12-05 at the step that reached it, time 100)
+    ('badH', ["'h' = -5", '(time 50)', "patch 'surface'", '[0, inf)']),
     ('badKappa', ["named 'kappaSoil'", "patch 'surface'"]),
 ):
     with open(os.path.join(scratch, case, 'log.ahcFoam')) as f:

@@ -4,6 +4,7 @@
 
 #include "fitForwardRuns.H"
 #include "checkedRead.H"
+#include "thermocouples.H"
 #include "casePaths.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -68,6 +69,38 @@ Foam::fitForwardRuns::fitForwardRuns
                 << " (the thermocouples function object whose"
                 << " sensors.csv holds the simulated histories)"
                 << exit(FatalIOError);
+        }
+        // Its sensors, read as the function object reads them (the
+        // observed sensors are checked against them before any run)
+        const dictionary& foDict = fos->subDict(foName);
+        if (foDict.getOrDefault<word>("type", word()) != "thermocouples")
+        {
+            FatalIOErrorInFunction(foDict)
+                << "functionObject " << foName << " of "
+                << runTime.controlDict().name() << " is of type "
+                << foDict.getOrDefault<word>("type", "(none)")
+                << ": hearthFit reads the sensors.csv of a function object"
+                << " of type thermocouples" << exit(FatalIOError);
+        }
+        sensorFile =
+            functionObjects::thermocouples::sensorFilePath
+            (
+                foDict, runTime.path()
+            );
+        pointField positions;
+        labelList lines, errorLines;
+        List<string> errors;
+        functionObjects::thermocouples::readSensorFile
+        (
+            sensorFile, positions, caseSensors, lines, errorLines, errors
+        );
+        if (!errors.empty())
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, sensorFile, errorLines[0]
+            )   << "the sensor file of function object " << foName << ": "
+                << errors[0].c_str() << exit(FatalIOError);
         }
     }
 }

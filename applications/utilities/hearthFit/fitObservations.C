@@ -194,7 +194,8 @@ Foam::fitObservations::fitObservations
     // and no sensor in two files
     const dictionary* groupsDict = obsDict.findDict("groups");
     std::vector<wordList> fileGroupSensors;
-    std::vector<fileName> colFile(measured.names.size(), path);
+    std::vector<fileName>& colFile = columnFile;
+    colFile.assign(measured.names.size(), path);
     if (groupsDict)
     {
         for (const entry& e : *groupsDict)
@@ -442,6 +443,67 @@ Foam::fitObservations::fitObservations
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fitObservations::checkCaseSensors
+(
+    const dictionary& obsDict,
+    const fileName& sensorFile,
+    const wordList& caseSensors
+) const
+{
+    // The observed sensors missing from the case, by file
+    std::vector<fileName> files;
+    std::vector<wordList> missing;
+    forAll(sensors, si)
+    {
+        if (caseSensors.found(sensors[si])) continue;
+        const fileName& f = columnFile[measCol[si]];
+        const auto it = std::find(files.begin(), files.end(), f);
+        if (it == files.end())
+        {
+            files.push_back(f);
+            missing.push_back(wordList(1, sensors[si]));
+        }
+        else
+        {
+            missing[it - files.begin()].append(sensors[si]);
+        }
+    }
+    if (files.empty()) return;
+
+    const bool one = files.size() == 1 && missing[0].size() == 1;
+    FatalIOErrorInFunction(obsDict) << "observations: ";
+    for (size_t i = 0; i < files.size(); ++i)
+    {
+        FatalIOError << (i ? "; " : "")
+            << (missing[i].size() > 1 ? "the columns " : "the column ");
+        forAll(missing[i], j)
+        {
+            const word& m = missing[i][j];
+            const word near(checkedRead::nearest(m, caseSensors));
+            FatalIOError << (j ? ", " : "") << m;
+            if (near.size())
+            {
+                FatalIOError << " (did you mean " << near << "?)";
+            }
+        }
+        FatalIOError << " of " << files[i];
+    }
+    FatalIOError
+        << (one ? " is not a sensor" : " are not sensors")
+        << " of the case; the sensors of " << sensorFile << " (its"
+        << " thermocouples function object):";
+    for (const word& c : caseSensors)
+    {
+        FatalIOError << ' ' << c;
+    }
+    FatalIOError
+        << nl << "    (a forward run would not write "
+        << (one ? "it" : "them") << ": remove the column, list the"
+        << " observed sensors in 'sensors', or add the sensor to the case)"
+        << exit(FatalIOError);
+}
+
 
 bool Foam::fitObservations::residuals
 (

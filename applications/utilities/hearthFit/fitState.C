@@ -58,6 +58,25 @@ void Foam::fitState::read
         }
         params.pars[j].initial = sp.get<scalar>(params.specs[j].name);
     }
+    // A parameter of the state removed from hearthFitDict since (a renamed
+    // one is an error above): resumed without it, said so
+    for (const entry& e : sp)
+    {
+        bool fitted = false;
+        for (label j = 0; j < params.size(); ++j)
+        {
+            fitted = fitted || params.specs[j].name == e.keyword();
+        }
+        if (!fitted)
+        {
+            Info<< "Note: -resume: parameter " << e.keyword() << " of "
+                << path << " (saved value "
+                << sp.get<scalar>(e.keyword()) << ") is no longer in the"
+                << " parameters of hearthFitDict: the fit goes on without"
+                << " it, the forward runs taking its value from the case's"
+                << " files" << endl;
+        }
+    }
     const scalar damping = st.get<scalar>("damping");
     if (damping > 0) opts.initialDamping = damping;
     iterOffset = st.get<label>("iteration");

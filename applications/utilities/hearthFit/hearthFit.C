@@ -219,6 +219,10 @@ int main(int argc, char *argv[])
     params.readPriors(fitDict, obs.sigmaGiven);
     const dictionary& fwdDict = fitDict.subDict("forwardModel");
     fitForwardRuns fwd(fwdDict, runTime);
+    obs.checkCaseSensors
+    (
+        fitDict.subDict("observations"), fwd.sensorFile, fwd.caseSensors
+    );
     const auto refinement(fitRefinement::New(fitDict, runTime));
 
     const dictionary* firstDict = fitDict.findDict("firstEstimate");

@@ -61,20 +61,32 @@ Foam::relativeHumidityFvPatchScalarField::relativeHumidityFvPatchScalarField
         airTemperature_ = Function1<scalar>::New("airTemperature", dict);
     }
 
-    relativeHumidity(&dict);
-
-    // The air temperature in kelvin (degrees Celsius typed would give a
-    // saturation pressure of nearly 0: dry air)
+    // RH, and the air temperature in kelvin (degrees Celsius typed would
+    // give a saturation pressure of nearly 0: dry air), over the whole
+    // run, before any step
+    for
+    (
+        const scalar t
+      : checkedRead::function1CheckTimes(*relativeHumidity_, db().time())
+    )
+    {
+        relativeHumidity(t, &dict);
+    }
     if (airTemperature_.valid())
     {
-        checkedRead::checkAirTemperature
+        for
         (
-            dict.name(), "airTemperature",
-            airTemperature_->value(db().time().timeOutputValue()),
-            db().time().timeOutputValue(),
-            "boundary condition " + type() + " on patch '" + p.name()
-          + "' of field " + iF.name()
-        );
+            const scalar t
+          : checkedRead::function1CheckTimes(*airTemperature_, db().time())
+        )
+        {
+            checkedRead::checkAirTemperature
+            (
+                dict.name(), "airTemperature", airTemperature_->value(t), t,
+                "boundary condition " + type() + " on patch '" + p.name()
+              + "' of field " + iF.name()
+            );
+        }
     }
 
     if (dict.found("value"))
@@ -150,7 +162,16 @@ Foam::scalar Foam::relativeHumidityFvPatchScalarField::relativeHumidity
     const dictionary* dict
 ) const
 {
-    const scalar t = db().time().timeOutputValue();
+    return relativeHumidity(db().time().timeOutputValue(), dict);
+}
+
+
+Foam::scalar Foam::relativeHumidityFvPatchScalarField::relativeHumidity
+(
+    const scalar t,
+    const dictionary* dict
+) const
+{
     const scalar RH = relativeHumidity_->value(t);
     if (!(RH >= 0 && RH <= 1))
     {

@@ -16,27 +16,13 @@ const Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::TminPlausible =
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::surfaceHeatLossFvPatchScalarField::checkTemperature
-(
-    const word& keyword,
-    const scalar T
-) const
-{
-    checkedRead::checkAirTemperature
-    (
-        dictName_, keyword, T, db().time().timeOutputValue(),
-        "boundary condition " + type() + " on patch '" + patch().name()
-      + "' of field " + internalField().name()
-    );
-}
-
-
 void Foam::surfaceHeatLossFvPatchScalarField::checkRange
 (
     const word& keyword,
     const scalar value,
     const validRange& range,
-    const bool ofTime
+    const bool ofTime,
+    const scalar t
 ) const
 {
     if (!range.contains(value))
@@ -47,8 +33,7 @@ void Foam::surfaceHeatLossFvPatchScalarField::checkRange
             << "Keyword '" << keyword << "' = " << value;
         if (ofTime)
         {
-            FatalIOError
-                << " (time " << db().time().timeOutputValue() << ")";
+            FatalIOError << " (time " << t << ")";
         }
         FatalIOError
             << " of boundary condition " << type()
@@ -56,6 +41,58 @@ void Foam::surfaceHeatLossFvPatchScalarField::checkRange
             << internalField().name()
             << " is outside its valid range " << range.str().c_str() << nl
             << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::checkedValue
+(
+    const word& keyword,
+    const Function1<scalar>& f,
+    const scalar t
+) const
+{
+    const scalar v = f.value(t);
+    if (keyword == "h")
+    {
+        checkRange(keyword, v, checkedRead::nonNegative(), true, t);
+    }
+    else if (keyword == "heatFlux")
+    {
+        checkRange(keyword, v, checkedRead::closed(0, 1e7), true, t);
+    }
+    else
+    {
+        checkedRead::checkAirTemperature
+        (
+            dictName_, keyword, v, t,
+            "boundary condition " + type() + " on patch '" + patch().name()
+          + "' of field " + internalField().name()
+        );
+    }
+    return v;
+}
+
+
+void Foam::surfaceHeatLossFvPatchScalarField::checkOverRun() const
+{
+    const Time& runTime = db().time();
+    const std::pair<word, const Function1<scalar>*> fs[] =
+    {
+        {"h", h_.get()}, {"Tair", Tair_.get()}, {"Tsky", Tsky_.get()},
+        {"heatFlux", heatFlux_.get()}
+    };
+    for (const auto& f : fs)
+    {
+        if (!f.second) continue;
+        for
+        (
+            const scalar t
+          : checkedRead::function1CheckTimes(*f.second, runTime)
+        )
+        {
+            checkedValue(f.first, *f.second, t);
+        }
     }
 }
 
@@ -69,16 +106,9 @@ void Foam::surfaceHeatLossFvPatchScalarField::values
 {
     const scalar t = db().time().timeOutputValue();
 
-    h = h_->value(t);
-    Tair = Tair_->value(t);
-    Tsky = Tsky_.valid() ? Tsky_->value(t) : Tair;
-
-    checkRange("h", h, checkedRead::nonNegative(), true);
-    checkTemperature("Tair", Tair);
-    if (Tsky_.valid())
-    {
-        checkTemperature("Tsky", Tsky);
-    }
+    h = checkedValue("h", *h_, t);
+    Tair = checkedValue("Tair", *Tair_, t);
+    Tsky = Tsky_.valid() ? checkedValue("Tsky", *Tsky_, t) : Tair;
 }
 
 
@@ -88,9 +118,8 @@ Foam::scalar Foam::surfaceHeatLossFvPatchScalarField::imposedFlux() const
     {
         return 0;
     }
-    const scalar q = heatFlux_->value(db().time().timeOutputValue());
-    checkRange("heatFlux", q, checkedRead::closed(0, 1e7), true);
-    return q;
+    return
+        checkedValue("heatFlux", *heatFlux_, db().time().timeOutputValue());
 }
 
 
@@ -216,10 +245,8 @@ Foam::surfaceHeatLossFvPatchScalarField::surfaceHeatLossFvPatchScalarField
     checkRange("emissivity", emissivity_, checkedRead::closed(0, 1), false);
 
 
-    // Range of the Function1s at the start time
-    scalar h, Tair, Tsky;
-    values(h, Tair, Tsky);
-    imposedFlux();
+    // Range of the Function1s over the whole run, before any step
+    checkOverRun();
 
     if (dict.found("value"))
     {

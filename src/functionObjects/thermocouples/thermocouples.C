@@ -13,6 +13,10 @@
 #include "Time.H"
 #include "addToRunTimeSelectionTable.H"
 #include "numericTable.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
+#include "symmetryPolyPatch.H"
 
 #include <cmath>
 
@@ -300,6 +304,55 @@ Foam::labelList Foam::functionObjects::thermocouples::locate
 }
 
 
+void Foam::functionObjects::thermocouples::warnOnBoundary() const
+{
+    // Per sensor the boundary patch it lies on in its cell (-1: none), on
+    // the rank that holds it, then on every rank
+    labelList onPatch(size(), -1);
+    const polyBoundaryMesh& bMesh = mesh_.boundaryMesh();
+    forAll(onPatch, i)
+    {
+        const label celli = elementList_[i];
+        if (celli < 0) continue;
+        const scalar h = cbrt(mesh_.cellVolumes()[celli]);
+        for (const label facei : mesh_.cells()[celli])
+        {
+            if (mesh_.isInternalFace(facei)) continue;
+            const label patchi = bMesh.whichPatch(facei);
+            const polyPatch& pp = bMesh[patchi];
+            if
+            (
+                pp.coupled() || isA<emptyPolyPatch>(pp)
+             || isA<wedgePolyPatch>(pp) || isA<symmetryPlanePolyPatch>(pp)
+             || isA<symmetryPolyPatch>(pp)
+            )
+            {
+                continue;
+            }
+            const vector& Sf = mesh_.faceAreas()[facei];
+            const scalar d =
+                mag((operator[](i) - mesh_.faceCentres()[facei]) & Sf)
+               /max(mag(Sf), VSMALL);
+            if (d <= 1e-9*h) onPatch[i] = patchi;
+        }
+    }
+    Pstream::listCombineGather(onPatch, maxEqOp<label>());
+    Pstream::listCombineScatter(onPatch);
+    forAll(onPatch, i)
+    {
+        if (onPatch[i] < 0) continue;
+        WarningInFunction
+            << "Sensor " << names_[i] << ' ' << operator[](i) << " (line "
+            << lines_[i] << " of " << sensorFile_ << ") lies on the"
+            << " boundary patch " << bMesh[onPatch[i]].name() << nl
+            << "    Found in a cell here, but a point exactly on the"
+            << " boundary may be found in no cell on another mesh or"
+            << " decomposition (then an error): move it slightly inside"
+            << endl;
+    }
+}
+
+
 void Foam::functionObjects::thermocouples::fatal
 (
     const labelList& errorLines,
@@ -471,6 +524,23 @@ Foam::functionObjects::thermocouples::thermocouples
 }
 
 
+Foam::fileName Foam::functionObjects::thermocouples::sensorFilePath
+(
+    const dictionary& foDict,
+    const fileName& caseDir
+)
+{
+    fileName file(foDict.get<fileName>("file"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = caseDir/file;
+    }
+    file.clean();
+    return file;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::fileName Foam::functionObjects::thermocouples::csvFile() const
@@ -510,14 +580,7 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     }
 
     // Settings
-    fileName file(dict.get<fileName>("file"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = mesh_.time().globalPath()/file;
-    }
-    file.clean();
-    sensorFile_ = file;
+    sensorFile_ = sensorFilePath(dict, mesh_.time().globalPath());
 
     fieldName_ = dict.getOrDefault<word>("field", "T");
 
@@ -592,6 +655,10 @@ bool Foam::functionObjects::thermocouples::read(const dictionary& dict)
     static_cast<pointField&>(*this) = positions;
 
     const labelList outside(locate(mesh_));
+    if (changed)
+    {
+        warnOnBoundary();
+    }
 
     if (fileErrors.size() || outside.size())
     {

@@ -6,6 +6,7 @@
 #include "checkedRead.H"
 #include "temperatureCheck.H"
 #include "surfaceHeatLossFvPatchScalarField.H"
+#include "fireTemperatureFvPatchScalarField.H"
 #include "waterModel.H"
 #include "liquidFlow.H"
 #include "fvc.H"
@@ -288,8 +289,34 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     }
     reduce(WScale_, maxOp<scalar>());
 
+    // The cell values of p_w are computed (update): an internalField given
+    // in the start time's pw other than them (and than the placeholder 0)
+    // is not used, said in one line
+    const scalarField pwRead(pw_.primitiveField());
+
     checkOpenPatches();
+    warnAboveTestedRange();
     update();
+
+    scalar pwIgnored = 0;
+    forAll(pwRead, celli)
+    {
+        const scalar d = mag(pwRead[celli] - pw_[celli]);
+        if (pwRead[celli] != 0 && d > 1e-3*(mag(pw_[celli]) + 1))
+        {
+            pwIgnored = max(pwIgnored, d);
+        }
+    }
+    reduce(pwIgnored, maxOp<scalar>());
+    if (pwIgnored > 0)
+    {
+        Info<< "Note: the internalField of " << pw_.name() << " in "
+            << mesh_.time().timeName() << " (up to " << pwIgnored
+            << " Pa from the computed p_w) is not used: p_w in the cells is"
+            << " computed from T and alpha_L (Kelvin-Laplace equilibrium);"
+            << " only its boundary conditions are read" << endl;
+    }
+
     fluxes();
     storeOld();
 }
@@ -1199,6 +1226,43 @@ void Foam::pendularState::checkOpenPatches() const
                     << " Pa (relative humidity in [0, 1])"
                     << exit(FatalError);
             }
+        }
+    }
+}
+
+
+void Foam::pendularState::warnAboveTestedRange() const
+{
+    forAll(T_.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+        // (every rank holds every non-processor patch, with or without
+        // faces: the reduction is reached by all)
+        if (Tp.patch().coupled())
+        {
+            continue;
+        }
+        scalar Tmax = gMax(Tp);
+        const auto* fire = isA<fireTemperatureFvPatchScalarField>(Tp);
+        if (fire)
+        {
+            for (const scalar T : fire->temperatures())
+            {
+                Tmax = max(Tmax, T);
+            }
+        }
+        if (Tmax > TmaxTested)
+        {
+            WarningInFunction
+                << "Patch " << Tp.patch().name() << " of " << T_.name()
+                << ": temperature up to " << Tmax << " K ("
+                << Tmax - 273.15 << " C)"
+                << (fire ? " in its fire history" : " at the start")
+                << ", above " << TmaxTested << " K (2000 C), the hottest"
+                << " fire pendularFoam's tests run" << nl
+                << "    (tests/pendularCriticalPoint; hearthCase refuses"
+                << " such a fire for pendularFoam): the results beyond are"
+                << " untested" << endl;
         }
     }
 }

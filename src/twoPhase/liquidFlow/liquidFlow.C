@@ -85,8 +85,16 @@ void Foam::liquidFlow::readFixedPressure
         checkedRead::checkFunction1Coeffs(pDict, "pl", where);
         pl_.set(patchi, Function1<scalar>::New("pl", pDict));
         plDict_.set(patchi, new dictionary(pDict));
-        // Its value at the start (and at every evaluation: liquidPressure)
-        checkedPl(patchi, mesh_.time().value());
+        // Its values over the whole run, before any step (a table at every
+        // row), and at every evaluation (liquidPressure)
+        for
+        (
+            const scalar t
+          : checkedRead::function1CheckTimes(pl_[patchi], mesh_.time())
+        )
+        {
+            checkedPl(patchi, t);
+        }
         return;
     }
     checkedRead::checkKeywords(pDict, {"type", "waterTable"}, where);
@@ -316,17 +324,28 @@ Foam::liquidFlow::liquidFlow
 
 Foam::vector Foam::liquidFlow::readGravity(const fvMesh& mesh)
 {
-    const uniformDimensionedVectorField g
+    IOobject gIO
     (
-        IOobject
-        (
-            "g",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
+        "g",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
     );
+    // (OpenFOAM's own message would name the file, not why it is needed)
+    if (!gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, gIO.objectPath(), -1, -1
+        )
+            << "liquidFlow needs gravity from constant/g (the liquid's"
+            << " Darcy flux is driven by p_l and rho_l g), and there is no"
+            << " such file, or it is not a uniformDimensionedVectorField: add"
+            << " constant/g, e.g. dimensions [0 1 -2 0 0 0 0]; value"
+            << " (0 0 -9.81);" << exit(FatalIOError);
+    }
+    const uniformDimensionedVectorField g(gIO);
     if (g.dimensions() != dimAcceleration)
     {
         FatalIOError
