@@ -8,19 +8,28 @@
 The restart point is the latest time written whole: a time folder (in
 every processor* folder when the case is decomposed) whose balance block
 ('Energy balance at t = ' of ahcFoam, 'Water balance at t = ' of
-pendularFoam) is in the solver's log. The solvers print that block after
-runTime.write() and after a global sum (gSum), so every rank had written
-that time; a later folder may be cut short by the interrupt. The start of
-the run the log belongs to (0, or the time an earlier resume restarted
-from) counts as written whole too.
+pendularFoam) is in one of the solver's logs (log.<solver>, and the
+log.<solver>.<time> of earlier parts), and which is whole on disk too
+(uniform/time and each field of that folder written to its end, the
+footer line). The solvers print that block after runTime.write() and after
+a global sum (gSum), so every rank had written that time; a later folder
+may be cut short by the interrupt. The start of each part of the run (0,
+or the time an earlier resume restarted from) counts as written whole too.
+Refused: a later folder that looks whole on disk but is in no log (a log
+renamed or cut short: resuming before it would discard it), a run still
+holding Allrun.lock (its process alive; a stale lock is said and
+ignored), and a solver that printed End but exited non-zero
+(log.<solver>.status, kept by Allrun: a failed check at its end).
 
-prepare: the folders after the restart point are removed (cut short), the
+prepare: the folders after the restart point (cut short) are renamed
+<time>.cutShort (nothing is deleted; the solver reads no such name), the
 solver's log is kept as log.<solver>.<restart time> (the part of the
 history up to that time: its balances there are the ones the summary adds
 up; a log that wrote nothing since its own start is removed), and
 system/controlDict gets `startFrom latestTime` (its line alone edited,
-checked by foamDictionary). A solver that had ended (End in its log, the restart
-point at endTime) is not run again: only the post-processing.
+written to a temporary file renamed over it, checked by foamDictionary).
+A solver that had ended (End in its log, the restart point at endTime) is
+not run again: only the post-processing.
 
 merge: a restarted run writes its thermocouples' rows into a new folder
 postProcessing/thermocouples/<its start time>/ (the function object's
@@ -29,10 +38,15 @@ postProcessing/thermocouples/0/sensors.csv (which every reader of the
 case takes: plotSensors, hearthCaseSummary): each folder's rows up to
 and including the next folder's start time, then the rows after it from
 that folder (the rows the interrupted run wrote after the restart time are
-dropped: the resumed run computed them again). The later folders are kept
+dropped from the merged file, the resumed run computed them again; the
+interrupted run's file is kept as sensors.csv.<restart time>). A row at
+the restart time missing from the earlier folder (the interrupt between
+the balance print and the row's write) is taken from the next folder,
+which writes it at its start. The later folders are kept
 as written (merging again gives the same file). A row cut short by the
 interrupt (no end of line) is not a row. Refused: another header, or an
-earlier folder without a row at the next one's start (a gap).
+earlier folder without a row at the next one's start in either folder (a
+gap).
 """
 
 import math
@@ -60,19 +74,37 @@ def same(a, b):
 
 
 def info(case):
-    """system/hearthCaseInfo as a dict keyword -> value (text)"""
+    """system/hearthCaseInfo as a dict keyword -> value (text); its
+    solver and ranks checked (RestartError naming the file)"""
+    path = os.path.join(case, 'system', 'hearthCaseInfo')
     d = {}
-    with open(os.path.join(case, 'system', 'hearthCaseInfo')) as f:
-        for line in f:
-            if line.strip():
-                k, v = (line.split(None, 1) + [''])[:2]
-                d.setdefault(k, v.strip())
+    try:
+        with open(path) as f:
+            for line in f:
+                if line.strip():
+                    k, v = (line.split(None, 1) + [''])[:2]
+                    d.setdefault(k, v.strip())
+    except OSError as e:
+        raise RestartError('%s: cannot read it: %s' % (path, e))
+    if d.get('solver') not in HEADING:
+        raise RestartError('%s: keyword solver: %r, not one of %s' % (
+            path, d.get('solver'), ', '.join(sorted(HEADING))))
+    try:
+        if int(d.get('ranks', '')) < 1:
+            raise ValueError
+    except ValueError:
+        raise RestartError('%s: keyword ranks: %r, not a whole number >= 1'
+                           % (path, d.get('ranks')))
     return d
 
 
 def isTime(name):
-    return re.match(r'^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$', name) is not None \
-        and name not in ('.', '..')
+    """A time folder's name: a number (not '2026.12.05', '.', '..')"""
+    try:
+        float(name)
+    except ValueError:
+        return False
+    return re.match(r'^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$', name) is not None
 
 
 def timeNames(path):
@@ -136,27 +168,127 @@ def endTime(case):
                            % r.stdout.strip()[:300])
 
 
+FOOTER = '// ****'
+
+
+def fileWhole(path):
+    """An ASCII OpenFOAM file written to its end: its last line is the
+    footer '// ****...' (the templates write ascii, controlDict)"""
+    try:
+        with open(path, 'rb') as f:
+            f.seek(0, os.SEEK_END)
+            f.seek(max(0, f.tell() - 200))
+            tail = f.read().decode('ascii', 'replace').rstrip().split('\n')
+    except OSError:
+        return False
+    return tail[-1].startswith(FOOTER)
+
+
+def fields(folder):
+    """The files of a time folder (its fields), names"""
+    return sorted(n for n in os.listdir(folder)
+                  if os.path.isfile(os.path.join(folder, n)))
+
+
+def diskWhole(roots, t, names):
+    """Time t written whole on disk: in every root, uniform/time and each
+    field of names there and written to its end"""
+    return all(fileWhole(os.path.join(r, t, n))
+               for r in roots for n in ['uniform/time'] + names)
+
+
+def solverStatus(case, solver):
+    """The solver's exit status Allrun kept in log.<solver>.status (None:
+    not kept, e.g. it was interrupted)"""
+    path = os.path.join(case, 'log.%s.status' % solver)
+    try:
+        with open(path) as f:
+            return int(f.read().split()[0])
+    except (OSError, IndexError, ValueError):
+        return None
+
+
+def lockHolder(case):
+    """The pid of a run still going in CASE (Allrun.lock, written by Allrun
+    while it runs), or None; a stale lock (its process gone) is said so"""
+    path = os.path.join(case, 'Allrun.lock')
+    try:
+        with open(path) as f:
+            pid = int(f.read().split()[0])
+    except (OSError, IndexError, ValueError):
+        return None
+    if pid == os.getppid():
+        return None                 # prepare, run by that Allrun itself
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        sys.stderr.write('%s: stale lock (process %d is gone): going on\n'
+                         % (path, pid))
+        return None
+    except PermissionError:
+        pass
+    return pid
+
+
 def restartPoint(case):
     """(time name, whether the solver must run): the latest time written
-    whole (module doc); RestartError if there is none after the start"""
+    whole (module doc); RestartError if there is none after the start, or
+    if a later folder looks whole on disk but no log confirms it, or if a
+    run still holds the case's lock, or if the solver ended failing"""
     inf = info(case)
     solver, ranks = inf['solver'], int(inf['ranks'])
+    pid = lockHolder(case)
+    if pid is not None:
+        raise RestartError('a run is still going in it (process %d, %s): '
+                           'stop it first (kill %d) or let it end'
+                           % (pid, os.path.join(case, 'Allrun.lock'), pid))
     log = os.path.join(case, 'log.' + solver)
     segs = segmentLogs(case, solver)
-    # log.<solver> started where the latest kept part ends (or at 0)
-    start = max([float(upto) for _, upto in segs if upto is not None] + [0])
+    starts = [float(upto) for _, upto in segs if upto is not None] + [0]
+    # whole by the logs: a balance in any part, or a part's start
+    confirmed = starts + [w for p, _ in segs for w in balanceTimes(p, solver)]
     roots = timeRoots(case, ranks)
-    written = [t for t in timeNames(roots[0])
-               if all(os.path.isdir(os.path.join(r, t)) for r in roots[1:])]
-    whole = balanceTimes(log, solver) + [start]
-    ok = [t for t in written if any(same(float(t), w) for w in whole)]
-    if not ok or float(ok[-1]) <= 0:
-        where = 'processor*/' if ranks > 1 else ''
+    names = sorted(set(n for r in roots for n in timeNames(r)), key=float)
+    byLog = [t for t in names if any(same(float(t), w) for w in confirmed)
+             and all(os.path.isdir(os.path.join(r, t)) for r in roots)]
+    where = 'processor*/' if ranks > 1 else ''
+    if not byLog:
+        raise RestartError('%s: no time folder (not even 0) in %s' % (
+            case, where or 'the case'))
+    t = byLog[-1]
+    ref = fields(os.path.join(roots[0], t))
+    later = [n for n in names if float(n) > float(t) and not same(float(n),
+                                                                  float(t))]
+    looks = [n for n in later if diskWhole(roots, n, ref)]
+    if looks:
+        raise RestartError(
+            '%s%s looks written whole (uniform/time and the fields of %s, on '
+            'every rank) but no log.%s* has its balance (a log renamed, '
+            'removed or cut short?); resuming from %s s would discard it. '
+            'Restore the log that has it, or move %s aside yourself to '
+            'resume from %s s' % (where, looks[-1], t, solver, t,
+                                  ', '.join(where + n for n in looks), t))
+    if float(t) <= 0:
+        if later:
+            raise RestartError(
+                'nothing written whole after 0: the time folder(s) %s were '
+                'cut short (a field or uniform/time missing or not written '
+                'to its end), so there is nothing to resume from; start it '
+                'from scratch' % ', '.join(where + n for n in later))
         raise RestartError(
             'nothing written yet: the solver wrote no time after 0 (%s<time>/ '
-            'folders with their balance in log.%s), so there is nothing to '
-            'resume from; start it from scratch' % (where, solver))
-    t = ok[-1]
+            'folders), so there is nothing to resume from; start it '
+            'from scratch' % where)
+    if not diskWhole(roots, t, ref):
+        raise RestartError('%s%s: its balance is in log.%s* but a file of it '
+                           'is not written to its end' % (where, t, solver))
+    status = solverStatus(case, solver)
+    if ended(log) and status:
+        raise RestartError(
+            '%s ended (End in log.%s) with exit status %d (log.%s.status): '
+            'it failed a check at its end (see the end of log.%s); running '
+            'it again would not change that' % (solver, solver, status,
+                                                 solver, solver))
     run = not (ended(log) and float(t) >= endTime(case)*(1 - 1e-12))
     return t, run
 
@@ -174,8 +306,10 @@ def setStartFrom(case):
         raise RestartError('%s: %d lines "startFrom ...;" (one expected): set '
                            'startFrom latestTime yourself' % (path, n))
     if new != text:
-        with open(path, 'w') as f:
+        tmp = path + '.resuming'
+        with open(tmp, 'w') as f:
             f.write(new)
+        os.replace(tmp, path)       # a Ctrl-C leaves the old or the new
     r = subprocess.run(['foamDictionary', '-entry', 'startFrom', '-value',
                         path], stdout=subprocess.PIPE,
                        stderr=subprocess.STDOUT, universal_newlines=True)
@@ -199,9 +333,18 @@ def prepare(case):
     for root in timeRoots(case, ranks) + ([case] if ranks > 1 else []):
         for name in timeNames(root):
             if float(name) > float(t) and not same(float(name), float(t)):
-                shutil.rmtree(os.path.join(root, name))
-                print('removed %s (written after t = %s s, cut short)'
-                      % (os.path.relpath(os.path.join(root, name), case), t))
+                old = os.path.join(root, name)
+                new = old + '.cutShort'
+                i = 1
+                while os.path.exists(new):
+                    new, i = '%s.cutShort%d' % (old, i), i + 1
+                os.rename(old, new)
+                print('%s renamed %s (written after t = %s s, cut short; '
+                      'the solver does not read it)'
+                      % (os.path.relpath(old, case),
+                         os.path.basename(new), t))
+    if os.path.isfile(log + '.status'):
+        os.remove(log + '.status')  # the resumed run writes its own
     if any(same(w, float(t)) for w in balanceTimes(log, solver)):
         os.rename(log, log + '.' + t)
         print('log.%s kept as log.%s.%s (the run up to t = %s s)'
@@ -246,21 +389,28 @@ def mergeSensors(case, name='thermocouples'):
     files = [os.path.join(d, f, 'sensors.csv') for f in folders]
     read = [readRows(p) for p in files]
     out = []
+    fromNext = False        # folder i's row at its start taken from it
     for i, (header, rows) in enumerate(read):
         if header != read[0][0]:
             raise RestartError('%s: header %r, not that of %s (%r)'
                                % (files[i], header, files[0], read[0][0]))
         lo = float(folders[i])
         hi = float(folders[i + 1]) if i + 1 < len(folders) else math.inf
+        atStart = i == 0 or fromNext
+        fromNext = False
         if hi < math.inf and not any(same(t, hi) for t, _ in rows):
-            raise RestartError(
-                '%s ends at t = %s s, before the restart at %s s (%s): the '
-                'history would have a gap' % (
-                    files[i], rows[-1][0] if rows else 'its start',
-                    folders[i + 1], files[i + 1]))
+            # the interrupt between the balance print and the row's write:
+            # the resumed run wrote that row again at its start
+            if not any(same(t, hi) for t, _ in read[i + 1][1]):
+                raise RestartError(
+                    '%s ends at t = %s s, before the restart at %s s (%s): '
+                    'the history would have a gap' % (
+                        files[i], rows[-1][0] if rows else 'its start',
+                        folders[i + 1], files[i + 1]))
+            fromNext = True
         out += [line for t, line in rows
-                if (i == 0 or (t > lo and not same(t, lo)))
-                and (t < hi or same(t, hi))]
+                if (atStart or (t > lo and not same(t, lo)))
+                and (t < hi or same(t, hi) and not fromNext)]
     times = [float(line.split(',', 1)[0]) for line in out]
     for a, b in zip(times, times[1:]):
         if not b > a:
@@ -269,6 +419,11 @@ def mergeSensors(case, name='thermocouples'):
     tmp = files[0] + '.merging'
     with open(tmp, 'w') as f:
         f.write(read[0][0] + '\n' + ''.join(line + '\n' for line in out))
+    # the interrupted run's own history kept (first merge only: later the
+    # file holds merged rows)
+    keep = '%s.%s' % (files[0], folders[1])
+    if not os.path.exists(keep):
+        os.link(files[0], keep)
     os.replace(tmp, files[0])
     print('%s: the histories of %s merged (%d rows, %s to %s s)'
           % (os.path.relpath(files[0], case), ', '.join(folders), len(out),
