@@ -15,6 +15,7 @@
 #include <sstream>
 #include <algorithm>
 #include <type_traits>
+#include <set>
 
 static_assert
 (
@@ -91,18 +92,29 @@ bool hasOption(const std::string& prefix, const std::string& name)
 }
 
 
+// The options that createSolver set itself (its defaults, not the
+// user's: without '-'), which PETSc may leave unread when the user's
+// options choose another solver (blockSystem::warnUnusedOptions)
+std::set<std::string> ownDefaults;
+
 // Set the PETSc option -<prefix><name> unless it is already set (from
-// PETSC_OPTIONS, which so takes precedence)
+// PETSC_OPTIONS, which so takes precedence); the user's (petscOptions)
+// with own false
 void setDefaultOption
 (
     const std::string& prefix,
     const std::string& name,
-    const std::string& value
+    const std::string& value,
+    const bool own = true
 )
 {
     const std::string full("-" + prefix + name);
     if (!hasOption(prefix, name))
     {
+        if (own)
+        {
+            ownDefaults.insert(prefix + name);
+        }
         Foam::petscSession::check
         (
             PetscOptionsSetValue
@@ -124,9 +136,14 @@ bool isOptionName(const std::string& s)
 
 
 // The options of the keyword petscOptions ("-name [value] ..."), under the
-// prefix, unless already set
-void setUserOptions(const Foam::dictionary& dict, const std::string& prefix)
+// prefix, unless already set; returns their names under the prefix
+std::vector<std::string> setUserOptions
+(
+    const Foam::dictionary& dict,
+    const std::string& prefix
+)
 {
+    std::vector<std::string> names;
     const Foam::string extra =
         dict.getOrDefault<Foam::string>("petscOptions", "");
     std::istringstream is(extra);
@@ -151,8 +168,10 @@ void setUserOptions(const Foam::dictionary& dict, const std::string& prefix)
         {
             value = tokens[++i];
         }
-        setDefaultOption(prefix, name.substr(1), value);
+        setDefaultOption(prefix, name.substr(1), value, false);
+        names.push_back(prefix + name.substr(1));
     }
+    return names;
 }
 
 } // End anonymous namespace
@@ -578,7 +597,7 @@ void Foam::blockSystem::createSolver
     const bool scaleFromEnv = hasOption(prefix, "ksp_diagonal_scale");
 
     // The user's PETSc options first (they win over the keywords)
-    setUserOptions(dict, prefix);
+    dictOptions_ = setUserOptions(dict, prefix);
 
     const std::string inFile(" in " + dict.name());
     const std::string petscOptions
@@ -586,6 +605,7 @@ void Foam::blockSystem::createSolver
         "petscOptions \""
       + dict.getOrDefault<string>("petscOptions", "") + "\"" + inFile
     );
+    dictOptionsSource_ = petscOptions;
     if (pcFrom.empty() && hasOption(prefix, "pc_type"))
     {
         pcFrom = petscOptions;
@@ -772,6 +792,83 @@ void Foam::blockSystem::createSolver
                 << " (or give it false), or another preconditioner"
                 << exit(FatalIOError);
         }
+    }
+}
+
+
+void Foam::blockSystem::warnUnusedOptions() const
+{
+    unusedOptionsChecked_ = true;
+
+    // Not collective: every rank reads its own options database (the same
+    // options on every rank); the warning is the master's
+    PetscInt n = 0;
+    char** names = nullptr;
+    char** values = nullptr;
+    petscSession::check
+    (
+        PetscOptionsLeftGet(nullptr, &n, &names, &values),
+        "PetscOptionsLeftGet"
+    );
+    std::string fromDict, fromEnv;
+    for (PetscInt i = 0; i < n; ++i)
+    {
+        const std::string name(names[i] ? names[i] : "");
+        if
+        (
+            name.compare(0, prefix_.size(), prefix_) != 0
+         || ownDefaults.count(name)
+        )
+        {
+            continue;   // another object's, or a default of createSolver's
+        }
+        const std::string shown
+        (
+            " -" + name + (values[i] ? std::string(" ") + values[i] : "")
+        );
+        if
+        (
+            std::find(dictOptions_.cbegin(), dictOptions_.cend(), name)
+         != dictOptions_.cend()
+        )
+        {
+            fromDict += shown;
+        }
+        else
+        {
+            fromEnv += shown;
+        }
+    }
+    petscSession::check
+    (
+        PetscOptionsLeftRestore(nullptr, &n, &names, &values),
+        "PetscOptionsLeftRestore"
+    );
+
+    if (!fromDict.empty() || !fromEnv.empty())
+    {
+        std::string msg
+        (
+            "PETSc did not use these options of the block solver "
+          + std::string(solverName_) + " in its first solve:"
+        );
+        if (!fromDict.empty())
+        {
+            msg +=
+                "\n    from " + dictOptionsSource_ + " (each under the prefix -"
+              + prefix_ + "):" + fromDict;
+        }
+        if (!fromEnv.empty())
+        {
+            msg += "\n    from the environment variable PETSC_OPTIONS:" + fromEnv;
+        }
+        WarningInFunction
+            << msg.c_str() << nl
+            << "    A misspelt option, the prefix given twice in petscOptions"
+            << " (it is written without it), or an option of another"
+            << " solver or preconditioner than the one chosen: PETSc"
+            << " ignores it. The solver PETSc runs is named above (Newton"
+            << " steps' linear solver)." << endl;
     }
 }
 
@@ -1233,6 +1330,9 @@ Foam::blockSystem::blockSystem
     prefix_(),
     cpr_(),
     failure_(),
+    dictOptions_(),
+    dictOptionsSource_(),
+    unusedOptionsChecked_(false),
     relTol_(0),
     forcing_(forcingType::none),
     forcingMax_(0.01),
@@ -1503,6 +1603,10 @@ Foam::solverPerformance Foam::blockSystem::solve
     }
     std::fesetenv(&fpEnv);
     petscSession::check(ierr, "KSPSolve");
+    if (!unusedOptionsChecked_)
+    {
+        warnUnusedOptions();
+    }
 
     if (!finiteSource)
     {
