@@ -7,6 +7,8 @@
 #include "pendularResidual.H"
 #include "meshNonOrthogonality.H"
 #include "variableStepBdf2.H"
+#include <cstdlib>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -375,6 +377,30 @@ Foam::dictionary Foam::pendularEngineSetup::coupledSolverDict
         Info<< "Newton steps' linear solver: the preconditioner as set in "
             << coupledDict.name().c_str() << " (" << given << " given)"
             << endl;
+    }
+
+    // The environment variable PETSC_OPTIONS setting the preconditioner
+    // (-<dictionary name>_pc_type): PETSc takes it over every choice above
+    // (blockSystem sets its options only where PETSC_OPTIONS has none), so
+    // the line above alone would name a preconditioner PETSc does not run
+    {
+        const char* env = std::getenv("PETSC_OPTIONS");
+        std::istringstream is(env ? env : "");
+        const std::string option("-" + coupledDict.dictName() + "_pc_type");
+        std::string token;
+        while (is >> token)
+        {
+            if (token == option)
+            {
+                std::string value;
+                is >> value;
+                Info<< "Newton steps' linear solver: the environment variable"
+                    << " PETSC_OPTIONS sets " << option.c_str() << " "
+                    << value.c_str() << ": PETSc runs it, whatever the line"
+                    << " above chose" << endl;
+                break;
+            }
+        }
     }
 
     // preconditioner cpr (blockSystem): the pressure unknown is p_g - pRef,
