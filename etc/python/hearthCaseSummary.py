@@ -28,17 +28,8 @@ import hearthTutorial as ht      # noqa: E402
 import hearthCaseRestart as hr   # noqa: E402
 
 
-def info(case):
-    d = {}
-    with open(os.path.join(case, 'system', 'hearthCaseInfo')) as f:
-        for line in f:
-            k, v = line.split(None, 1)
-            d[k] = v.strip()
-    return d
-
-
 def main(case):
-    inf = info(case)
+    inf = hr.info(case)
     solver, factor = inf['solver'], float(inf['factor'])
     figures = []
     out = []
