@@ -36,11 +36,15 @@ whole. Both on 2 ranks (decomposed).
    ends of the interval (3e-4 K beyond that measured).
 3. summary.csv (the balances added up over the two logs: the interrupted
    one kept as log.ahcFoam.TR): heat in, stored, water within 1e-5
-   relative (3.5e-7, 3.5e-7, 9.3e-7 measured: the difference of 1 over
+   relative (3.5e-7, 3.5e-7, 5.5e-7 measured: the difference of 1 over
    the heated soil); peaks within 5e-3 K and depths within 5e-3 cm (as
    1); the peak times within one maxDeltaT (60 s). Summed over one log
    only (the summary before -resume), heat in is that since TR: 3.15
-   instead of 5.11 MJ (TR 1800 s).
+   instead of 5.11 MJ (TR 1800 s). The water evaporated adds each part's
+   own, from its start (0.1171 kg to 1800 s, 0.1675 kg after; 0.2845 kg
+   uninterrupted, 2026-12-05); the summary before 2026-12-05 took the first
+   write's water minus the last's and gave 0.1675 kg for the uninterrupted
+   run: what evaporated by the first write was missing.
 4. system/controlDict: only startFrom differs from the reference's
    (latestTime), the rest as hearthCase wrote it.
 """
