@@ -334,13 +334,11 @@ void Foam::fireRecord::readFile
     numericTable::settings s;
     s.separator = separator_;
     s.headerLines = headerLines_;
-    s.numericColumns = labelList({timeColumn_, temperatureColumn_});
-    s.roles.resize(max(timeColumn_, temperatureColumn_) + 1);
-    s.roles[timeColumn_] = "a time";
-    s.roles[temperatureColumn_] = "a temperature";
-    s.columnsDescription =
-        "timeColumn " + std::to_string(timeColumn_)
-      + " and temperatureColumn " + std::to_string(temperatureColumn_);
+    s.twoColumns
+    (
+        "timeColumn", timeColumn_, "a time",
+        "temperatureColumn", temperatureColumn_, "a temperature"
+    );
     s.what = "the fire history file";
     s.context = describeSource();
 
