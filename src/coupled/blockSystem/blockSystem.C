@@ -596,6 +596,31 @@ void Foam::blockSystem::createSolver
     );
     const bool scaleFromEnv = hasOption(prefix, "ksp_diagonal_scale");
 
+    // The preconditioner set in PETSc's options database before this
+    // solver set any (PetscInitialize read PETSC_OPTIONS, PETSC_OPTIONS_YAML,
+    // the -options_file they name, .petscrc): PETSc runs it over every
+    // choice of the caller's (pendularEngineSetup's log line) and of the
+    // keywords (hostile testing 2026-12-05b, finding 5)
+    if (!pcFrom.empty())
+    {
+        char value[256] = "";
+        PetscBool set = PETSC_FALSE;
+        petscSession::check
+        (
+            PetscOptionsGetString
+            (
+                nullptr, prefix.c_str(), "-pc_type", value, sizeof(value),
+                &set
+            ),
+            "PetscOptionsGetString"
+        );
+        Info<< "Newton steps' linear solver: PETSc's options database (the"
+            << " environment's PETSC_OPTIONS, PETSC_OPTIONS_YAML or an"
+            << " -options_file) sets -" << prefix.c_str() << "pc_type "
+            << value << ": PETSc runs it, whatever the line above chose"
+            << endl;
+    }
+
     // The user's PETSc options first (they win over the keywords)
     dictOptions_ = setUserOptions(dict, prefix);
 

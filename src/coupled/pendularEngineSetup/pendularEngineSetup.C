@@ -7,8 +7,6 @@
 #include "pendularResidual.H"
 #include "meshNonOrthogonality.H"
 #include "variableStepBdf2.H"
-#include <cstdlib>
-#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -164,6 +162,23 @@ void Foam::pendularEngineSetup::checkEngine
             << " degrees): the Newton engine's face fluxes with the snGrad"
             << " schemes' non-orthogonal corrections, held fixed in its"
             << " Jacobian (deferred correction)" << endl;
+    }
+    // Settings of a scheme or engine not run: a warning, not an error (the
+    // project's comparisons switch timeScheme or engine by one line and
+    // keep the other's settings: tests/pendularBdf2, pendularResidual)
+    if (scheme == timeScheme::Euler && nonlinearDict.found("localErrorTol"))
+    {
+        WarningInFunction
+            << "Keyword 'localErrorTol' in " << nonlinearDict.name()
+            << " ignored: the time scheme is Euler (localErrorTol drives"
+            << " BDF2's steps only)" << endl;
+    }
+    if (eng != engine::newton && mesh.solutionDict().found("coupled"))
+    {
+        WarningInFunction
+            << "Sub-dictionary 'coupled' in " << mesh.solutionDict().name()
+            << " ignored: the engine is segregated (coupled sets the Newton"
+            << " engine's linear solver)" << endl;
     }
     if (scheme == timeScheme::BDF2 && eng != engine::newton)
     {
@@ -379,29 +394,9 @@ Foam::dictionary Foam::pendularEngineSetup::coupledSolverDict
             << endl;
     }
 
-    // The environment variable PETSC_OPTIONS setting the preconditioner
-    // (-<dictionary name>_pc_type): PETSc takes it over every choice above
-    // (blockSystem sets its options only where PETSC_OPTIONS has none), so
-    // the line above alone would name a preconditioner PETSc does not run
-    {
-        const char* env = std::getenv("PETSC_OPTIONS");
-        std::istringstream is(env ? env : "");
-        const std::string option("-" + coupledDict.dictName() + "_pc_type");
-        std::string token;
-        while (is >> token)
-        {
-            if (token == option)
-            {
-                std::string value;
-                is >> value;
-                Info<< "Newton steps' linear solver: the environment variable"
-                    << " PETSC_OPTIONS sets " << option.c_str() << " "
-                    << value.c_str() << ": PETSc runs it, whatever the line"
-                    << " above chose" << endl;
-                break;
-            }
-        }
-    }
+    // (a preconditioner set in PETSc's options database, e.g. by the
+    // environment variable PETSC_OPTIONS, wins over every choice above:
+    // blockSystem::createSolver says so in the line after this one)
 
     // preconditioner cpr (blockSystem): the pressure unknown is p_g - pRef,
     // the unknown 1 of (T, p_g - pRef, W) (pendularResidual), unless given

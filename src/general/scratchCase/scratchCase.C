@@ -74,6 +74,73 @@ namespace
     }
 
     const char* const placeholders[] = {"solver", "nProcs", "case", "log"};
+
+    //- The shortest time limit of a run [s]: a solver's start-up (its
+    //  libraries loaded, the case's mesh and fields read) and a first
+    //  step; a limit below it kills every run, a fit of failed runs
+    //  (hostile testing 2026-12-05b, finding 6: 1e-9 accepted). Measured
+    //  2026-12-05 at load 6-7: ahcFoam -help 0.6-0.9 s wall, ahcFoam on
+    //  tests/hearthFitParallel's 748 cells to its first step (1 s) 1.0-1.2
+    //  s; a launcher (mpirun, srun) adds to it. Above it the limit is the
+    //  user's knowledge of a run's length
+    const Foam::scalar minTimeLimit = 1;
+
+    //- The shell's syntax error of command (empty if none): /bin/sh -n,
+    //  the shell that runs it (scratchCase::start), reads it without
+    //  running anything (an unbalanced quote, a dangling |, ...)
+    std::string shellSyntaxError(const std::string& command)
+    {
+        int fds[2];
+        if (::pipe(fds) != 0)
+        {
+            return std::string();
+        }
+        const pid_t pid = ::fork();
+        if (pid == 0)
+        {
+            ::close(fds[0]);
+            ::dup2(fds[1], 1);
+            ::dup2(fds[1], 2);
+            ::close(fds[1]);
+            ::execl
+            (
+                "/bin/sh", "sh", "-n", "-c", command.c_str(),
+                static_cast<char*>(nullptr)
+            );
+            ::_exit(127);
+        }
+        ::close(fds[1]);
+        if (pid < 0)
+        {
+            // (no process to check it: the runs will say)
+            ::close(fds[0]);
+            return std::string();
+        }
+        std::string out;
+        char buf[256];
+        while (true)
+        {
+            const ssize_t n = ::read(fds[0], buf, sizeof(buf));
+            if (n > 0)
+            {
+                out.append(buf, n);
+            }
+            else if (n == 0 || errno != EINTR)
+            {
+                break;
+            }
+        }
+        ::close(fds[0]);
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        {}
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        {
+            return std::string();
+        }
+        while (!out.empty() && std::isspace(out.back())) out.pop_back();
+        return out.empty() ? std::string("rejected by /bin/sh -n") : out;
+    }
 }
 
 
@@ -651,6 +718,16 @@ Foam::string Foam::scratchCase::launcher
         }
     }
 
+    // Its shell syntax, as /bin/sh reads it (an unbalanced quote: every
+    // run failed, 'Unterminated quoted string'; finding 6)
+    {
+        const std::string err(shellSyntaxError(launcher));
+        if (!err.empty())
+        {
+            bad("not a valid shell command: " + err);
+        }
+    }
+
     // Its command (not the solver, not an environment assignment VAR=x)
     wordList exes(1, word(launcher.substr(0, launcher.find(' ')), false));
     if
@@ -704,11 +781,21 @@ Foam::string Foam::scratchCase::launcher
 
 Foam::scalar Foam::scratchCase::readTimeLimit(const dictionary& dict)
 {
-    return
+    const scalar limit =
         checkedRead::getOrDefault
         (
             dict, "timeLimit", dimTime, 0, checkedRead::nonNegative()
         ).value();
+    // A limit shorter than a solver's start-up kills every run
+    // (minTimeLimit)
+    if (limit > 0 && limit < minTimeLimit)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'timeLimit' = " << limit << " s in " << dict.name()
+            << " is shorter than a solver's start-up: valid 0 (no limit) or"
+            << " [" << minTimeLimit << ", inf) s" << nl << exit(FatalIOError);
+    }
+    return limit;
 }
 
 

@@ -245,11 +245,24 @@ Foam::pendularMedium::pendularMedium(const fvMesh& mesh)
         }
     }
 
-    checkedRead::check
-    (
-        porosity().objectPath(), "porosity", porosity(),
-        checkedRead::closedOpen(SMALL, 1)
-    );
+    // (phi = 0 leaves no pores: the cell field 0/porosity if given, else
+    // the keyword of the soil's file, constant/soilProperties or its alias)
+    if (isFile(porosity().objectPath()))
+    {
+        checkedRead::check
+        (
+            porosity().objectPath(), "porosity", porosity(),
+            checkedRead::closedOpen(SMALL, 1)
+        );
+    }
+    else
+    {
+        checkedRead::check
+        (
+            *this, "porosity", readPorosity().value(),
+            checkedRead::closedOpen(SMALL, 1)
+        );
+    }
 
     Info<< "Pendular medium: porosity " << gMin(porosity().primitiveField())
         << " to " << gMax(porosity().primitiveField())
@@ -529,6 +542,12 @@ void Foam::pendularMedium::checkInitialState
                 << " is not modelled), in file " << T.objectPath() << nl
                 << exit(FatalIOError);
         }
+    }
+
+    // The liquid's fixedPressure faces not over-pressured at the start
+    if (liquidFlow_.valid())
+    {
+        liquidFlow_->checkStart(p);
     }
 
     // The liquid: none near (or above) the critical point, and a vapour

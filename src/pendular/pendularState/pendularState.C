@@ -13,6 +13,7 @@
 #include "upwind.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
+#include "StringStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -295,7 +296,29 @@ Foam::pendularState::pendularState(const fvMesh& mesh)
     const scalarField pwRead(pw_.primitiveField());
 
     checkOpenPatches();
+    checkOpenPatchHistories();
     warnAboveTestedRange();
+
+    // A mesh without a physical boundary face (every patch empty, wedge,
+    // symmetry or coupled): nothing can enter or leave, said in one line
+    // (hostile testing 2026-12-05b, 7: it ran with balances of 0, silent)
+    {
+        label nPhysical = 0;
+        for (const fvPatch& fp : mesh_.boundary())
+        {
+            if (!polyPatch::constraintType(fp.patch().type()))
+            {
+                nPhysical += fp.size();
+            }
+        }
+        if (returnReduce(nPhysical, sumOp<label>()) == 0)
+        {
+            Info<< "Note: the mesh has no physical boundary face (every"
+                << " patch empty, wedge, symmetry or coupled): no heat, gas"
+                << " or water can enter or leave, the state only relaxes"
+                << endl;
+        }
+    }
     update();
 
     scalar pwIgnored = 0;
@@ -1225,6 +1248,116 @@ void Foam::pendularState::checkOpenPatches() const
                     << " p_wsat(T) = " << pSat
                     << " Pa (relative humidity in [0, 1])"
                     << exit(FatalError);
+            }
+        }
+    }
+}
+
+
+namespace
+{
+    // A patch value as a Function1 of time when the condition holds one
+    // (uniformFixedValue), rebuilt from the condition's own entries as it
+    // writes them for a restart (v1912's uniformFixedValue keeps its
+    // Function1 private); null otherwise
+    Foam::autoPtr<Foam::Function1<Foam::scalar>> uniformHistory
+    (
+        const Foam::fvPatchScalarField& pf
+    )
+    {
+        if (pf.type() != "uniformFixedValue")
+        {
+            return nullptr;
+        }
+        Foam::OStringStream os;
+        pf.write(os);
+        Foam::IStringStream is(os.str());
+        const Foam::dictionary dict(is);
+        return Foam::Function1<Foam::scalar>::New("uniformValue", dict);
+    }
+}
+
+
+void Foam::pendularState::checkOpenPatchHistories() const
+{
+    // Where the patch's T and p_w are known over the run (T: fireTemperature,
+    // uniformFixedValue or fixedValue; p_w: uniformFixedValue or
+    // fixedValue), p_w <= p_wsat(T_b) over the run, checked before any step
+    // (it stopped the run at the step reaching it). A table is linear
+    // between its rows, a fire history too: checked at the rows of both
+    // (other Function1 types: at 1001 times, checkedRead::
+    // function1CheckTimes), within the run. Other conditions of T
+    // (surfaceHeatLoss, ...) give T_b only as the run makes it:
+    // checkOpenPatches at every step
+    const Time& runTime = mesh_.time();
+    const scalar t0 = runTime.startTime().value();
+    const scalar t1 = max(t0, runTime.endTime().value());
+    forAll(kind_, patchi)
+    {
+        const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
+        const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
+        const auto* fire = isA<fireTemperatureFvPatchScalarField>(Tp);
+        const autoPtr<Function1<scalar>> pwHistory(uniformHistory(pwp));
+        const autoPtr<Function1<scalar>> THistory(uniformHistory(Tp));
+        if
+        (
+            (
+                kind_[patchi] != patchKind::open
+             && kind_[patchi] != patchKind::semiPermeable
+            )
+         || pwp.empty()
+         || !(pwHistory || pwp.type() == "fixedValue")
+         || !(fire || THistory || Tp.type() == "fixedValue")
+         || !(pwHistory || fire || THistory)    // constant: the start's check
+        )
+        {
+            continue;
+        }
+        DynamicList<scalar> times({t0, t1});
+        if (fire)
+        {
+            times.append(fire->times());
+        }
+        for (const auto* f : {pwHistory.get(), THistory.get()})
+        {
+            if (f)
+            {
+                times.append(checkedRead::function1CheckTimes(*f, runTime));
+            }
+        }
+        Foam::sort(times);
+        for (const scalar t : times)
+        {
+            if (t < t0 || t > t1)
+            {
+                continue;
+            }
+            forAll(pwp, facei)
+            {
+                const scalar Tb =
+                    fire ? fire->temperature(t, false)
+                  : THistory ? THistory->value(t) : Tp[facei];
+                const scalar pSat = medium_.saturationPressure(Tb);
+                const scalar pw =
+                    pwHistory ? pwHistory->value(t) : pwp[facei];
+                if (pw > (1 + 1e-9)*pSat)
+                {
+                    dictionary pwDict;
+                    pwDict.name() = pw_.objectPath();
+                    FatalIOErrorInFunction(pwDict)
+                        << "Patch '" << pwp.patch().name() << "' of "
+                        << pw_.name() << " (" << pwp.type() << "): p_w = "
+                        << pw << " Pa at time " << t << " s is above the"
+                        << " saturation pressure p_wsat(T) = " << pSat
+                        << " Pa at the patch's temperature T = " << Tb
+                        << " K then (" << Tp.type() << " in "
+                        << T_.objectPath() << "): relative humidity "
+                        << pw/pSat << nl
+                        << "    Valid: p_w <= p_wsat(T) over the run"
+                        << " (relative humidity in [0, 1]); checked before"
+                        << " any step at the rows of the histories of p_w"
+                        << " and T" << exit(FatalIOError);
+                }
             }
         }
     }

@@ -53,6 +53,37 @@ Foam::scalar Foam::liquidFlow::checkedPl
 
 
 
+void Foam::liquidFlow::checkNotPonded
+(
+    const label patchi,
+    const label i,
+    const scalar pl,
+    const scalar pg,
+    const scalar t
+) const
+{
+    if (pl > pg && !ponding_)
+    {
+        // An over-pressured (ponded) face: its liquid would flood the
+        // cell beyond the saturation form's range (the Newton iterates
+        // then leave it, e.g. S <= S_wr, far from the cause)
+        const dictionary& dict = plDict_[patchi];
+        const label facei = mesh_.boundaryMesh()[patchi].start() + i;
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << (pl_.set(patchi) ? "pl" : "waterTable")
+            << "' of the fixedPressure liquid boundary condition of patch '"
+            << mesh_.boundaryMesh()[patchi].name() << "' in " << dict.name()
+            << ": p_l = " << pl << " Pa at time " << t
+            << " s is above the gas pressure p_g = " << pg << " Pa of its"
+            << " face " << i << " (cell " << mesh_.faceOwner()[facei]
+            << "): valid range [" << Foam::name(plMin_) << ", " << pg << "] Pa"
+            << " (p_l <= p_g of the face's cell: an over-pressured, ponded"
+            << " face is beyond the saturation form; pendularFoam's"
+            << " saturatedZone allows it)" << exit(FatalIOError);
+    }
+}
+
+
 void Foam::liquidFlow::readFixedPressure
 (
     const dictionary& pDict,
@@ -316,6 +347,20 @@ Foam::liquidFlow::liquidFlow
                 = p.delta();
         }
     }
+    // The mobile range (S_wr, maxSaturation] must not be empty: S_wr at or
+    // above the pendular range's alphaLMax leaves no liquid that can flow
+    // inside it (hostile testing 2026-12-05b, finding 2)
+    const scalar Swr = minSaturation();
+    if (Swr >= maxSaturation)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'Swr' = " << Swr << " in " << dict.name()
+            << " leaves no mobile liquid: valid range "
+            << checkedRead::closedOpen(0, maxSaturation).str().c_str()
+            << ", below the largest saturation of the unknown's range, "
+            << maxSaturation << " (pendularFoam: alphaLMax of the meniscus"
+            << " model, the end of the pendular range)" << exit(FatalIOError);
+    }
     readBoundary(dict, everyPatch, maxSaturation);
 }
 
@@ -441,6 +486,41 @@ Foam::scalar Foam::liquidFlow::liquidPressure
 }
 
 
+void Foam::liquidFlow::checkStart(const volScalarField& p) const
+{
+    const scalar t0 = mesh_.time().value();
+    forAll(type_, patchi)
+    {
+        if (type_[patchi] != patchType::fixedPressure)
+        {
+            continue;
+        }
+        // The face's p_g: the condition's value at the start (a fixed p,
+        // or the cell's); a fixedValue p holds it over the run, so a pl
+        // of time is checked against it at the times sampled at read
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        const bool pgFixed = pp.type() == "fixedValue";
+        const scalarList times
+        (
+            pgFixed && pl_.set(patchi)
+          ? checkedRead::function1CheckTimes(pl_[patchi], mesh_.time())
+          : scalarList(1, t0)
+        );
+        forAll(pp, i)
+        {
+            for (const scalar t : times)
+            {
+                const scalar pl =
+                    pl_.set(patchi)
+                  ? pl_[patchi].value(t)
+                  : liquidPressure(patchi, i);
+                checkNotPonded(patchi, i, pl, pp[i], t);
+            }
+        }
+    }
+}
+
+
 Foam::liquidDarcyFlux::liquidState Foam::liquidFlow::boundaryState
 (
     const label patchi,
@@ -454,25 +534,7 @@ Foam::liquidDarcyFlux::liquidState Foam::liquidFlow::boundaryState
         return state(pg, value_[patchi], T);
     }
     const scalar pl = liquidPressure(patchi, i);
-    if (pl > pg && !ponding_)
-    {
-        // An over-pressured (ponded) face: its liquid would flood the
-        // cell beyond the saturation form's range (the Newton iterates
-        // then leave it, e.g. S <= S_wr, far from the cause)
-        const dictionary& dict = plDict_[patchi];
-        const label facei = mesh_.boundaryMesh()[patchi].start() + i;
-        FatalIOErrorInFunction(dict)
-            << "Keyword '" << (pl_.set(patchi) ? "pl" : "waterTable")
-            << "' of the fixedPressure liquid boundary condition of patch '"
-            << mesh_.boundaryMesh()[patchi].name() << "' in " << dict.name()
-            << ": p_l = " << pl << " Pa at time " << mesh_.time().value()
-            << " s is above the gas pressure p_g = " << pg << " Pa of its"
-            << " face " << i << " (cell " << mesh_.faceOwner()[facei]
-            << "): valid range [" << Foam::name(plMin_) << ", " << pg << "] Pa"
-            << " (p_l <= p_g of the face's cell: an over-pressured, ponded"
-            << " face is beyond the saturation form; pendularFoam's"
-            << " saturatedZone allows it)" << exit(FatalIOError);
-    }
+    checkNotPonded(patchi, i, pl, pg, mesh_.time().value());
     const scalar pc = pg - pl;
     return
         liquidDarcyFlux::liquidState

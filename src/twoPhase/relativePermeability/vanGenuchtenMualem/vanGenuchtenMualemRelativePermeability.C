@@ -55,7 +55,38 @@ Foam::relativePermeabilityModels::vanGenuchtenMualem::vanGenuchtenMualem
             coeffs, "lg", dimless, 1.0/3.0, checkedRead::nonNegative()
         ).value()
     )
-{}
+{
+    // Mualem's closed form (van Genuchten 1980, eq. 8) is Mualem's
+    // integral of van Genuchten's retention curve of the same m = 1 - 1/n:
+    // with the capillary law vanGenuchten of another n, k_rl is an
+    // empirical law fitted on its own, not that integral. Warned, not
+    // refused: each law is valid and the run well posed (k_rl monotone in
+    // [0, 1]); separately fitted n are a user's choice
+    const word pcModel =
+        dict.getOrDefault<word>("capillaryPressureModel", word::null);
+    if (pcModel == "vanGenuchten" && dict.isDict("vanGenuchtenCoeffs"))
+    {
+        const dictionary& pcCoeffs = dict.subDict("vanGenuchtenCoeffs");
+        if (pcCoeffs.found("n"))
+        {
+            const scalar nPc =
+                checkedRead::get
+                (
+                    pcCoeffs, "n", dimless, validRange{1, GREAT, true, true}
+                ).value();
+            if (mag(nPc - n_) > 1e-9*n_)
+            {
+                IOWarningInFunction(coeffs)
+                    << "Keyword 'n' = " << n_ << " of relativePermeability"
+                    << "Model vanGenuchtenMualem in " << coeffs.name()
+                    << " differs from the capillary law vanGenuchten's n = "
+                    << nPc << " in " << pcCoeffs.name() << ": Mualem's"
+                    << " closed form holds for the retention curve's own m"
+                    << " = 1 - 1/n (van Genuchten 1980, eq. 8)" << endl;
+            }
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
