@@ -123,6 +123,25 @@ c.true('sensors: rows up to %s s = the uninterrupted run\'s (%d rows)'
                                        <= float(tr)])
 with open(os.path.join(res, 'log.' + solver)) as fh:
     steps = [float(m) for m in re.findall(r'(?m)^Time = (\S+)$', fh.read())]
+# the first step after TR sized from the controller's state read back
+# (uniform/subStepController): it ends where the uninterrupted run's did
+# (printed to timePrecision 10; with the stored deltaT instead, before the
+# state was written: 121.869483 s against 121.6666667 s, pendularFoam in
+# tests/hearthCaseResumeCoupled)
+with open(os.path.join(ref, 'log.' + solver)) as fh:
+    stepsRef = [float(m) for m in re.findall(r'(?m)^Time = (\S+)$',
+                                              fh.read())
+                if float(m) > float(tr)]
+c.true('first step after %s s: to the uninterrupted run\'s %s s'
+       % (tr, stepsRef[0] if stepsRef else '?'),
+       steps and stepsRef and abs(steps[0] - stepsRef[0]) <= 1e-9*steps[0],
+       '%s s' % (steps[0] if steps else '?'))
+if solver == 'ahcFoam':
+    # no time scheme history: every later step too (measured)
+    c.true('steps after %s s: the uninterrupted run\'s times' % tr,
+           len(steps) == len(stepsRef) and
+           all(abs(a - b) <= 1e-9*b for a, b in zip(steps, stepsRef)),
+           '%d and %d steps' % (len(steps), len(stepsRef)))
 after = [[float(x) for x in r.split(',')] for r in rRes
          if float(r.split(',')[0]) > float(tr)]
 tAfter = [r[0] for r in after]
