@@ -11,15 +11,17 @@ whole. The solver is system/hearthCaseInfo's; the tolerances are its
 Why not equal. The step controller's state (the last accepted sub-step's
 length, change of T, iterations and local-error limit) is written in
 <time>/uniform/subStepController and read back (since 2026-12-05): the
-resumed run's first step is the one the uninterrupted run took, not the
-stored deltaT (before: ahcFoam's first step after 1800 s was the 58.6 s
-cut to land on the write time where the run went on with 60 s, and the
-steps after it fell at other times). Not written: the state of the
-solvers' first iterates and time schemes.
-- ahcFoam: the first iterate of the first step (its extrapolation from
-  the last steps' enthalpy rates) is not extrapolated, so the first steps
-  converge to other iterates within the nonlinear tolerance (TTol 1e-2 K:
-  one more iteration each, max |dT| 2e-4 K apart); the steps fall at the
+resumed run's first step is the one the uninterrupted run took (before,
+it was uniform/time's deltaT, the last step before the write, often cut
+short to land on it, and the steps after it fell at other times until
+the next write). Not written: the state of the solvers' first iterates
+and time schemes.
+- ahcFoam: the last steps' enthalpy rates, from which the first iterate
+  of a step is extrapolated, are not written: the first step after TR
+  starts from the state at TR, and the first steps converge to other
+  iterates within the nonlinear tolerance (TTol 1e-2 K:
+  the first two took one more iteration, the steps' max |dT| up to 3.5e-3
+  K apart, the difference then diffusing away); the steps fall at the
   same times (the resumed log's 'Time = ' lines are the uninterrupted
   run's after TR). Measured, restarted at 1800 s of a 3 h run (30 min
   writes, 2 ranks): 9.7e-6 K at 3600 s, 1.8e-6 at 10800 s (liquidWater
