@@ -29,14 +29,20 @@ and time schemes.
   state was written (main's checkResume.py, the same case): 1.19e-3 K,
   6.5e-4 at 5400 s, liquidWater 2.2e-6, balances 3.5e-7 to 9.3e-7: the
   tolerances 2e-4 K (20 times the measured, a sixth of the old), 4e-7
-  (liquidWater) and 1e-7 (balances) fail that old resume.
+  (liquidWater) and 1e-7 (balances) fail that old resume. Checked by
+  hand: the same interrupt, uniform/subStepController removed from the
+  restart time before -resume (read as a case written before it: the old
+  behaviour), gave 1.191e-3 K, 6.45e-4, 2.2e-6, 3.5e-7 and 9.3e-7 again,
+  the first step to 1836.478379 s instead of 1833.333333 s: 26 checks
+  failed.
 - pendularFoam (timeScheme BDF2, localErrorTol 1 K, the defaults): BDF2's
   history (the level before TR) is not written, so the resumed run's
   first step is backward Euler (local error dt^2/2 T'' instead of BDF2's
   O(dt^3)), the local error estimate restarts at its third step and the
   step sequence after TR differs from the first step on (the first step
   itself, sized from the controller's state, is the uninterrupted run's:
-  1.667 s). The fields then differ by the change of the time
+  1.667 s; with the state file removed, 1.869 s, uniform/time's deltaT,
+  and T 9.17e-3 K at 240 s, checked by hand). The fields then differ by the change of the time
   discretisation error with the step sequence (bounded per step by
   localErrorTol, 1 K). Measured (tests/hearthCaseResumeCoupled, 500 C
   fire, restart at 120 s, writes every 2 min): T 7.6e-3 K at 240 s
