@@ -459,30 +459,58 @@ def mergeSensors(case, name='thermocouples'):
 # The balances over the parts of a resumed run (hearthCaseSummary)
 
 def runBalances(case, solver):
-    """(first, parts): the balances of the whole run, as blocks of
-    hearthTutorial's readers: the first block of the first log, and for
-    each part its block at the time the next part started from (the last
-    block of the last log). Their changes and flows add up."""
+    """The balances of the whole run, as blocks of hearthTutorial's
+    readers: for each part its block at the time the next part started from
+    (the last block of the last log), with 'log' its log's path. Each part's
+    flows, stored change and (ahcFoam) water evaporated count from its own
+    start: they add up."""
     segs = segmentLogs(case, solver)
     if not segs:
         raise RestartError('no log.%s in %s' % (solver, case))
     read = ht.energy_balances if solver == 'ahcFoam' else ht.pendular_balances
-    parts, first = [], None
+    parts = []
     for path, upto in segs:
         blocks = read(path)
-        if first is None and blocks:
-            first = blocks[0]
         if upto is None:
             if blocks:
-                parts.append(blocks[-1])
+                parts.append(dict(blocks[-1], log=path))
             continue
         at = [b for b in blocks if same(b['time'], float(upto))]
         if not at:
             raise RestartError('%s: no balance at t = %s s' % (path, upto))
-        parts.append(at[0])
+        parts.append(dict(at[0], log=path))
     if not parts:
         raise RestartError('%s: no balance in its logs' % case)
-    return first, parts
+    return parts
+
+
+def runTotals(case, solver):
+    """The balances of the whole run added up over its parts (runBalances),
+    for the mesh (per wedge sector): time (the last), heatIn, stored,
+    imbalance [J] and water [kg], the water evaporated (ahcFoam: each
+    part's liquid water at its start minus at its end) or that left through
+    the patches (pendularFoam)"""
+    parts = runBalances(case, solver)
+    if solver == 'ahcFoam':
+        for b in parts:
+            if 'evaporated' not in b:
+                raise RestartError(
+                    '%s: its balance at t = %g s gives no initial liquid'
+                    ' water (ahcFoam older than 2026-12-05): the water'
+                    ' evaporated since the start cannot be counted; run the'
+                    ' case again' % (b['log'], b['time']))
+        return dict(time=parts[-1]['time'],
+                    heatIn=sum(b['in'] for b in parts),
+                    stored=sum(b['stored'] for b in parts),
+                    imbalance=sum(b['imbalance'] for b in parts),
+                    water=sum(b['evaporated'] for b in parts),
+                    parts=parts)
+    return dict(time=parts[-1]['time'],
+                heatIn=-sum(b['energy']['out'] for b in parts),
+                stored=sum(b['energy']['stored'] for b in parts),
+                imbalance=sum(b['energy']['imbalance'] for b in parts),
+                water=sum(b['water']['out'] for b in parts),
+                parts=parts)
 
 
 def main(argv):

@@ -9,13 +9,14 @@
   (hearthAlteration's summary.csv at the last time, plus lineStart of
   hearthCaseInfo where the lines start under the surface: scannedPit);
 - the energy balance of the whole hearth: the solver's balance of the mesh
-  (added up over the parts of a resumed run: hearthCaseRestart.runBalances)
+  (added up over the parts of a resumed run: hearthCaseRestart.runTotals)
   times the factor from the mesh to the whole hearth (pi/tan(angle/2) for
   an axisymmetric wedge, 4 for a quarter pit, 1 otherwise:
   system/hearthCaseInfo);
 - the water evaporated, whole hearth: ahcFoam, the liquid water of the
-  soil at the start minus at the end (its energy balances); pendularFoam,
-  the water that left through the patches (its water balance);
+  soil at the start of the run minus at the end (its energy balances: each
+  part's own start and end, added up); pendularFoam, the water that left
+  through the patches (its water balance);
 - where the files are.
 Also writes CASE/summary.csv (name,value,unit) for tests.
 """
@@ -59,21 +60,13 @@ def main(case):
       'rim at %s m from the axis)' % inf['rim'])
     w('')
     # the balances of a run resumed (hearthCase -resume) add up over its
-    # parts (log.<solver>.<time>, then log.<solver>): each part's flows and
-    # stored change from its own start
-    first, parts = hr.runBalances(case, solver)
-    last = parts[-1]
-    if solver == 'ahcFoam':
-        heatIn = sum(b['in'] for b in parts)*factor
-        stored = sum(b['stored'] for b in parts)*factor
-        imb = sum(b['imbalance'] for b in parts)*factor
-        water = (first['liquidWater'] - last['liquidWater'])*factor
-    else:
-        heatIn = -sum(b['energy']['out'] for b in parts)*factor
-        stored = sum(b['energy']['stored'] for b in parts)*factor
-        imb = sum(b['energy']['imbalance'] for b in parts)*factor
-        water = sum(b['water']['out'] for b in parts)*factor
-    time = last['time']
+    # parts (log.<solver>.<time>, then log.<solver>): each part's flows,
+    # stored change and water from its own start
+    tot = hr.runTotals(case, solver)
+    parts = tot['parts']
+    heatIn, stored, imb, water = (tot[k]*factor for k in
+                                  ('heatIn', 'stored', 'imbalance', 'water'))
+    time = tot['time']
     w('Energy balance of the whole hearth at t = %.4g h:' % (time/3600))
     w('    heat in through the patches  %14.6g MJ' % (heatIn/1e6))
     w('    stored in the soil           %14.6g MJ' % (stored/1e6))
@@ -99,4 +92,7 @@ def main(case):
 
 
 if __name__ == '__main__':
-    main(sys.argv[1] if len(sys.argv) > 1 else '.')
+    try:
+        main(sys.argv[1] if len(sys.argv) > 1 else '.')
+    except hr.RestartError as e:
+        sys.exit('hearthCaseSummary: %s' % e)

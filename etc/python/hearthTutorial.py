@@ -200,8 +200,11 @@ def energy_balance_blocks(log):
 
 def parse_energy_balance(block):
     """One block of energy_balance_blocks -> dict: time, in_<patch> [J],
-    in, stored, latent, sensible, imbalance, relative, liquidWater [kg]
-    (the entries present)."""
+    in, stored, latent, sensible, imbalance, relative, liquidWater (now),
+    initialLiquidWater (at the start of the run, or of this part of a
+    resumed run, at time waterStart [s]), evaporated (initial - now) [kg]
+    (the entries present: ahcFoam before 2026-12-05 printed the liquid
+    water now only)."""
     text = '\n'.join(block)
     res = {'time': float(re.search(r'at t = (\S+)', text).group(1))}
     for m in re.finditer(r'heat in through (\S+) = (\S+)', text):
@@ -212,7 +215,10 @@ def parse_energy_balance(block):
                 ('sensible', r'sensible (\S+?)\)'),
                 ('imbalance', r'imbalance\s+= (\S+)'),
                 ('relative', r'\(relative (\S+?)\)'),
-                ('liquidWater', r'liquid water\s+= (\S+)'))
+                ('liquidWater', r'liquid water\s+= (\S+)'),
+                ('initialLiquidWater', r'liquid water\s+= .*?\(initial (\S+)'),
+                ('waterStart', r'liquid water\s+= .*? kg at t = (\S+) s'),
+                ('evaporated', r'liquid water\s+= .*?, evaporated (\S+) kg'))
     for key, p in patterns:
         m = re.search(p, text)
         if m:

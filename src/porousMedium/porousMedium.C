@@ -455,6 +455,16 @@ Foam::tmp<Foam::scalarField> Foam::porousMedium::liquidWater
 }
 
 
+Foam::scalar Foam::porousMedium::liquidWaterMass
+(
+    const scalarField& T,
+    const scalarField& TMax
+) const
+{
+    return liquid().rho()*gSum(mesh_.V()*liquidWater(T, TMax));
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::porousMedium::kappa
 (
     const volScalarField& T,

@@ -25,11 +25,32 @@ re-implemented from its documented formulas:
 and the latent part from the written liquid water, L rho_l sum V (theta0 -
 theta_l). Both must match what the log reports to 1e-9 (relative): the
 fields are written with 17 digits, so this leaves only summation round-off
-(the stored change is ~1/10 of the enthalpies it is the difference of)."""
+(the stored change is ~1/10 of the enthalpies it is the difference of).
+
+The water: at every write the log states the liquid water now, at the start
+of the run and the water evaporated since (hearthTutorial's reader). The
+initial water is recomputed from 0/T and the cell volumes, rho_l sum V theta0
+(1 - sigma(T0)), the water now from the written liquidWater; the evaporated
+water, initial - now, must match the log to 1e-9 of itself at every write,
+from the first write on (the first write comes after evaporation started: its
+evaporated water is checked to be more than 1e-3 of the last write's; reading
+it as the first write's water minus the last's, as hearthCaseSummary did
+before 2026-12-05, misses that much and is printed). hotWallResumed is hotWall
+resumed from its 7200 s write as hearthCase -resume does (log.ahcFoam.7200
+kept): its second part's initial water must be that of the 7200 s fields, and
+the water of the whole run added up over the parts (hearthCaseRestart
+.runTotals, what the summary prints) must equal the initial water from 0/
+minus the written water at 10800 s, to 1e-9 of it; the same for hotWall.
+The latent part of the stored change, a change since the start as the stored
+change is, must be L times the water evaporated (1e-9), at every write of
+each run and of the resumed part (before 2026-12-05 the solver printed the
+latent enthalpy held, 13.5 J at 8400 s where 1.0 J evaporated since 7200 s,
+and a sensible part of -10.1 J)."""
 import math
 import os
 import re
 import hearthcheck as hc
+import hearthCaseRestart as hr
 
 c = hc.Check('energyBalanceLatent')
 BALANCE_TOL = 1e-6
@@ -140,6 +161,61 @@ def rel(a, b):
     return abs(a - b)/max(abs(b), 1e-300)
 
 
+def initial_water(case, en):
+    """rho_l sum V theta0 (1 - sigma(T0)) [kg] from 0/T and 0/V (no 0/TMax:
+    TMax starts at T)"""
+    assert not os.path.exists(os.path.join(case, '0', 'TMax'))
+    V = hc.read_internal_field(os.path.join(case, '0', 'V'))
+    T0 = hc.read_internal_field(os.path.join(case, '0', 'T'))
+    T0 = T0*len(V) if len(T0) == 1 else T0
+    return en.rhoL*en.m['theta0']*sum(v*(1 - en.sigma(t))
+                                      for v, t in zip(V, T0))
+
+
+def written_water(case, time, en):
+    """rho_l sum V theta_l [kg] from the liquidWater written at time"""
+    V = hc.read_internal_field(os.path.join(case, '0', 'V'))
+    theta = hc.read_internal_field(os.path.join(case, time, 'liquidWater'))
+    return en.rhoL*sum(v*th for v, th in zip(V, theta))
+
+
+def check_water(case, en):
+    """The log's initial and evaporated water at every write against the
+    fields (module docstring)"""
+    W0 = initial_water(case, en)
+    eb = hc.energy_balances(os.path.join(case, 'log.ahcFoam'))
+    if not c.true('%s: every balance states the initial and evaporated'
+                  ' water, from t = 0 s' % case,
+                  bool(eb) and all('evaporated' in b and b['waterStart'] == 0
+                             for b in eb)):
+        return
+    worstInitial = max(rel(b['initialLiquidWater'], W0) for b in eb)
+    evap = [W0 - written_water(case, '%g' % b['time'], en) for b in eb]
+    worstEvap = max(rel(b['evaporated'], e) for b, e in zip(eb, evap))
+    old = eb[0]['liquidWater'] - eb[-1]['liquidWater']
+    print('    water: initial %.10g kg (0/ fields); evaporated %.6g kg by the'
+          ' first write (%g s), %.6g kg by the last; first minus last'
+          ' write %.6g kg (%.2g low)'
+          % (W0, evap[0], eb[0]['time'], evap[-1], old, rel(old, evap[-1])))
+    c.le('%s: initial liquid water, log vs 0/ fields (relative)' % case,
+         worstInitial, RECOMPUTE_TOL)
+    c.le('%s: water evaporated since t = 0, log vs fields (relative),'
+         ' worst write' % case, worstEvap, RECOMPUTE_TOL)
+    c.true('%s: water already evaporated at the first write (> 1e-3 of the'
+           ' last write\'s)' % case, evap[0] > 1e-3*evap[-1],
+           '%.3g of it' % (evap[0]/evap[-1]))
+    latent_vs_water(case, eb, en)
+
+
+def latent_vs_water(what, eb, en):
+    """The latent part of the stored change against L times the water
+    evaporated, both since the start of the run (energyConsistent: the
+    latent enthalpy is rho_l L theta0 sigma), at every write, to 1e-9"""
+    c.le('%s: latent change vs L x water evaporated (relative), worst write'
+         % what, max(rel(b['latent'], en.m['L']*b['evaporated'])
+                     for b in eb), RECOMPUTE_TOL)
+
+
 # --------------------------------------------------------------------------
 
 def check_case(case, endTime, nWrites):
@@ -197,6 +273,7 @@ def check_case(case, endTime, nWrites):
          worstLatent, RECOMPUTE_TOL)
     c.le('%s: liquid water mass from liquidWater vs log' % case,
          worstWater, RECOMPUTE_TOL)
+    check_water(case, en)
     return mat, bal
 
 
@@ -228,6 +305,37 @@ front = max(-z for z, th in zip(Cz, theta) if th < 0.5*mat['theta0'])
 c.true('hotWall: a drying front 1 to 10 cm deep at 3 h, wet below',
        0.01 < front < 0.10 and max(theta) > 0.999*mat['theta0'],
        'front (theta_l = theta0/2) at %.2f cm' % (100*front))
+
+# hotWall, and hotWall resumed from 7200 s: the water of the whole run as
+# the summary adds it up over the parts, each from its own start
+en = Enthalpy(mat)
+W0 = initial_water('hotWall', en)
+for case in ('hotWall', 'hotWallResumed'):
+    try:
+        tot = hr.runTotals(case, 'ahcFoam')
+    except hr.RestartError as e:
+        c.true('%s: runTotals' % case, False, str(e))
+        continue
+    parts = tot['parts']
+    nParts = 1 if case == 'hotWall' else 2
+    evap = W0 - written_water(case, '10800', en)
+    print('%s: %d part(s), water evaporated %.10g kg (summary), %.10g kg'
+          ' (fields)' % (case, len(parts), tot['water'], evap))
+    c.true('%s: %d part(s) to 10800 s' % (case, nParts),
+           len(parts) == nParts and tot['time'] == 10800)
+    c.le('%s: water evaporated of the whole run (runTotals) vs 0/ and'
+         ' 10800 s fields (relative)' % case, rel(tot['water'], evap),
+         RECOMPUTE_TOL)
+    if nParts == 2 == len(parts):
+        c.true('hotWallResumed: the second part starts at 7200 s',
+               parts[1]['waterStart'] == 7200)
+        # its stored change counts from 7200 s, and so must its latent part
+        latent_vs_water('hotWallResumed, second part',
+                        hc.energy_balances(parts[1]['log']), en)
+        c.le('hotWallResumed: the second part\'s initial water vs the'
+             ' 7200 s fields (relative)',
+             rel(parts[1]['initialLiquidWater'],
+                 written_water('hotWall', '7200', en)), RECOMPUTE_TOL)
 
 # flux: the imposed gradient is switched off after 2 h: no more heat in
 # through the surface; the dried layer then cools from inside (T < TMax)

@@ -75,6 +75,11 @@ differs by kelvins.
    (as 1); the peak times within one maxDeltaT (60 s; 0 measured).
    Summed over one log only (the summary before -resume), heat in is that
    since TR: 3.15 instead of 5.11 MJ (ahcFoam, TR 1800 s).
+   The water evaporated adds each part's own, from its start (ahcFoam:
+   0.1171 kg to 1800 s, 0.1675 kg after; 0.2845 kg uninterrupted,
+   2026-12-05); the summary before 2026-12-05 took the first write's
+   water minus the last's and gave 0.1675 kg for the uninterrupted run:
+   what evaporated by the first write was missing.
 4. system/controlDict: only startFrom differs from the reference's
    (latestTime), the rest as hearthCase wrote it.
 """

@@ -63,8 +63,9 @@ c.true('log prints the answer and its bracket as in result.csv',
 c.true('log has one line per run',
        len(re.findall(r'^run +\d+: ', log, re.M)) == len(runs))
 c.le('number of runs', len(runs), 12)
+# a hang guard, not a speed test (0.3-0.9 s a run measured, quiet to load 8)
 c.le('largest wall time of a run [s]',
-     max(float(r['wallTime_s']) for r in runs), 5)
+     max(float(r['wallTime_s']) for r in runs), 60)
 c.true('no point with TMax still rising at the end', 'still rising' not in log)
 
 # The heat keeps moving down after extinction

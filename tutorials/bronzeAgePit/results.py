@@ -93,7 +93,7 @@ fig.add('heatOutFar', -eb['in_far']/1e6, 'MJ')
 fig.add('stored', eb['stored']/1e6, 'MJ')
 fig.add('latent', eb['latent']/1e6, 'MJ')
 fig.add('waterEvaporated', eb['latent']/L, 'kg')
-fig.add('waterInitial', eb['liquidWater'] + eb['latent']/L, 'kg')
+fig.add('waterInitial', eb['initialLiquidWater'], 'kg')
 fig.add('imbalance', eb['imbalance'], 'J')
 fig.add('relativeImbalance', eb['relative'], '1')
 fig.add('largestRelativeImbalance',

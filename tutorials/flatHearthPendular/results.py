@@ -203,27 +203,16 @@ def main():
         fig.add('waterLost_pendular', -stored*SECTOR, 'kg')
         for k, v in wout.items():
             fig.add('waterOut_%s' % k, v*SECTOR, 'kg')
-    m = None
-    with open('conduction/log.ahcFoam') as f:
-        for line in f:
-            if 'liquid water' in line:
-                m = float(line.split('=')[1].split()[0])
-    if m is not None:
-        # initial liquid water of the wedge: W0 x the volume (checkMesh)
-        vol = None
-        with open('pendular/log.checkMesh') if os.path.exists(
-                'pendular/log.checkMesh') else open(os.devnull) as f:
-            for line in f:
-                mm = re.search(r'Total volume = (\S+)\.', line)
-                if mm:
-                    vol = float(mm.group(1))
-        if vol:
-            p('  ahcFoam:      evaporated %.3f kg (initial %.3f kg)'
-              % ((W0*vol - m)*SECTOR, W0*vol*SECTOR))
-            fig.add('waterLost_ahc', (W0*vol - m)*SECTOR, 'kg')
-            if stored is not None:
-                fig.add('waterLostRatio', -stored/(W0*vol - m), '1')
-            fig.add('waterInitial', W0*vol*SECTOR, 'kg')
+    # ahcFoam's last balance: the liquid water at the start and the water
+    # evaporated since
+    eb = ht.energy_balance('conduction/log.ahcFoam')
+    if eb and 'evaporated' in eb:
+        p('  ahcFoam:      evaporated %.3f kg (initial %.3f kg)'
+          % (eb['evaporated']*SECTOR, eb['initialLiquidWater']*SECTOR))
+        fig.add('waterLost_ahc', eb['evaporated']*SECTOR, 'kg')
+        if stored is not None:
+            fig.add('waterLostRatio', -stored/eb['evaporated'], '1')
+        fig.add('waterInitial', eb['initialLiquidWater']*SECTOR, 'kg')
     # heat through the fire disc
     for case, log, pat in (
             ('pendularFoam', 'pendular/log.pendularFoam',

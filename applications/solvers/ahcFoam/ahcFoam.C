@@ -22,7 +22,10 @@ Description
     A step that does not converge is cut in half and retried. The time step
     adapts to the largest temperature change per step and the iteration
     count. TMax, the maximum temperature reached in each cell, is written
-    with T and the liquid water content.
+    with T and the liquid water content. Each write prints the energy
+    balance since the start of the run and the liquid water: now, at the
+    start (of this part of a resumed run) and their difference, the water
+    evaporated since then (reportEnergyBalance.H).
 
     Controls (adaptiveTimeStepControls: read and range-checked before the
     first step):

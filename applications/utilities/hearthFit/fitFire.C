@@ -7,7 +7,7 @@
 #include "fitForwardRuns.H"
 #include "fitObservations.H"
 #include "fireHistory.H"
-#include "fireTemperatureFvPatchScalarField.H"
+#include "fireRecord.H"
 #include "checkedRead.H"
 #include "IFstream.H"
 
@@ -96,7 +96,7 @@ void checkFireFileRead
                 if (!tok.isStringType()) continue;
                 const fileName f
                 (
-                    fireTemperatureFvPatchScalarField::resolveFile
+                    fireRecord::resolveFile
                     (
                         tok.stringToken(), casePath
                     )

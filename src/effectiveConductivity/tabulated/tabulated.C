@@ -68,13 +68,11 @@ void Foam::effectiveConductivityModels::tabulated::readFile
 
     // The common table reader: format, numbers, increasing alpha_l
     numericTable::settings s;
-    s.numericColumns = labelList({alphaLColumn, kappaColumn});
-    s.roles.resize(max(alphaLColumn, kappaColumn) + 1);
-    s.roles[alphaLColumn] = "a liquid fraction alpha_l";
-    s.roles[kappaColumn] = "a conductivity k_e";
-    s.columnsDescription =
-        "alphaLColumn " + std::to_string(alphaLColumn)
-      + " and kappaColumn " + std::to_string(kappaColumn);
+    s.twoColumns
+    (
+        "alphaLColumn", alphaLColumn, "a liquid fraction alpha_l",
+        "kappaColumn", kappaColumn, "a conductivity k_e"
+    );
     s.orderedColumn = alphaLColumn;
     s.what = "the conductivity table";
     s.context = "conductivityModel tabulated of " + coeffs.name();
