@@ -25,7 +25,10 @@ and time schemes.
   same times (the resumed log's 'Time = ' lines are the uninterrupted
   run's after TR). Measured, restarted at 1800 s of a 3 h run (30 min
   writes, 2 ranks): 9.7e-6 K at 3600 s, 1.8e-6 at 10800 s (liquidWater
-  1.7e-8), summary balances 3.9e-9 relative. Before the controller's
+  1.7e-8), summary balances 3.9e-9 relative; hearthCaseInput's run of
+  12 h restarted at 3600 s (its writes every 30 min):
+  1.9e-6 K at 5400 s, balances 3.9e-10, its 743 steps after 3600 s at
+  the uninterrupted run's times. Before the controller's
   state was written (main's checkResume.py, the same case): 1.19e-3 K,
   6.5e-4 at 5400 s, liquidWater 2.2e-6, balances 3.5e-7 to 9.3e-7: the
   tolerances 2e-4 K (20 times the measured, a sixth of the old), 4e-7
