@@ -7,9 +7,11 @@
 
 The restart point is the latest time written whole: a time folder (in
 every processor* folder when the case is decomposed) whose balance block
-('Energy balance at t = ' of ahcFoam, 'Water balance at t = ' of
-pendularFoam) is in one of the solver's logs (log.<solver>, and the
-log.<solver>.<time> of earlier parts), and which is whole on disk too
+('Energy balance at t = ' of ahcFoam, 'Water balance at t = ' and the
+air and energy balances after it of pendularFoam) is whole in one of the
+solver's logs (log.<solver>, and the log.<solver>.<time> of earlier
+parts; a block cut short by the interrupt does not count, and its folder
+is taken as cut short), and which is whole on disk too
 (uniform/time and each field of that folder written to its end, the
 footer line). The solvers print that block after runTime.write() and after
 a global sum (gSum), so every rank had written that time; a later folder
@@ -137,8 +139,8 @@ def segmentLogs(case, solver):
     return out
 
 
-def balanceTimes(log, solver):
-    """The times (values) whose balance block is in the log"""
+def headingTimes(log, solver):
+    """The times (values) whose balance heading is in the log"""
     if not os.path.isfile(log):
         return []
     out = []
@@ -147,6 +149,22 @@ def balanceTimes(log, solver):
             if line.startswith(HEADING[solver]):
                 out.append(float(line[len(HEADING[solver]):].split()[0]))
     return out
+
+
+def balanceTimes(log, solver):
+    """The times (values) whose balance block is whole in the log, read
+    by hearthTutorial's readers, the summary's (runBalances): a block the
+    interrupt cut short is not one (pendularFoam prints its water, air and
+    energy balances one after the other, each flushed: an interrupt
+    between them left a time the summary of the resumed run could not
+    add up, 'no balance at t = '; ahcFoam's block ends with its liquid
+    water)"""
+    if not os.path.isfile(log):
+        return []
+    if solver == 'ahcFoam':
+        return [b['time'] for b in ht.energy_balances(log)
+                if 'liquidWater' in b]
+    return [b['time'] for b in ht.pendular_balances(log)]
 
 
 def ended(log):
@@ -259,7 +277,13 @@ def restartPoint(case):
     ref = fields(os.path.join(roots[0], t))
     later = [n for n in names if float(n) > float(t) and not same(float(n),
                                                                   float(t))]
-    looks = [n for n in later if diskWhole(roots, n, ref)]
+    # a later folder whose balance the interrupt cut short in the last log
+    # (its heading printed, not the whole block) is cut short, whole on
+    # disk or not: the resumed run writes it again
+    cut = [w for w in headingTimes(log, solver)
+           if not any(same(w, b) for b in balanceTimes(log, solver))]
+    looks = [n for n in later if diskWhole(roots, n, ref)
+             and not any(same(float(n), w) for w in cut)]
     if looks:
         raise RestartError(
             '%s%s looks written whole (uniform/time and the fields of %s, on '

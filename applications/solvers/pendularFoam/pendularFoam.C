@@ -112,6 +112,19 @@ int main(int argc, char *argv[])
     #include "createBalances.H"
     #include "createNewton.H"
 
+    // BDF2's history (the unknowns and amounts at the step before the
+    // start, the last steps' lengths) is not in the time folder: a
+    // restarted run takes its first step by backward Euler, as any run's
+    // first, and its balances' BDF2 term starts at 0 there
+    // (tests/hearthCaseResumeCoupled)
+    if (scheme == timeScheme::BDF2 && runTime.timeIndex() > 0)
+    {
+        Info<< "BDF2: restarted at t = " << runTime.timeName()
+            << " s: its first step by backward Euler (the level before it"
+            << " is not written), the BDF2 term of its balances from 0"
+            << " there" << endl;
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())

@@ -204,23 +204,6 @@ Foam::scalar Foam::adaptiveTimeStepControls::stepFactor
 }
 
 
-void Foam::adaptiveTimeStepControls::setDeltaT
-(
-    Time& runTime,
-    const scalar lastDeltaT,
-    const scalar lastMaxChange,
-    const label lastIterations
-) const
-{
-    if (!adjustTimeStep_ || runTime.timeIndex() <= runTime.startTimeIndex())
-    {
-        return;
-    }
-
-    runTime.setDeltaT(nextDeltaT(lastDeltaT, lastMaxChange, lastIterations));
-}
-
-
 Foam::scalar Foam::adaptiveTimeStepControls::nextDeltaT
 (
     const scalar lastDeltaT,

@@ -3,9 +3,16 @@
 \*---------------------------------------------------------------------------*/
 
 #include "subStepController.H"
+#include "checkedRead.H"
 #include "OStringStream.H"
+#include <limits>
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(subStepController, 0);
+}
 
 const Foam::Enum<Foam::subStepController::rejection>
 Foam::subStepController::rejectionNames
@@ -33,12 +40,25 @@ Foam::subStepController::subStepController
     const scalar deltaT0
 )
 :
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            controls.mesh().time().timeName(),
+            "uniform",
+            controls.mesh().time(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        )
+    ),
     solverName_(solverName),
     controls_(controls),
     lastDeltaT_(deltaT0),
     lastMaxChange_(0),
     lastIterations_(0),
     nextStepFactor_(GREAT),
+    restored_(false),
     DeltaT_(deltaT0),
     elapsed_(0),
     dtNominal_(deltaT0),
@@ -53,7 +73,40 @@ Foam::subStepController::subStepController
     lastCategory_(rejection::notConverged),
     totalIter_(0),
     maxChange_(0)
-{}
+{
+    // A restarted run: the state its last write saved (writeData)
+    if (headerOk())
+    {
+        const dictionary dict(readStream(typeName));
+        close();
+        checkedRead::checkKeywords
+        (
+            dict,
+            {"lastDeltaT", "lastMaxChange", "lastIterations", "nextStepFactor"}
+        );
+        lastDeltaT_ =
+            checkedRead::get
+            (
+                dict, "lastDeltaT", dimTime, checkedRead::positive()
+            ).value();
+        lastMaxChange_ =
+            checkedRead::get
+            (
+                dict, "lastMaxChange", dimTemperature,
+                checkedRead::nonNegative()
+            ).value();
+        lastIterations_ = checkedRead::getLabel(dict, "lastIterations", 0);
+        if (dict.found("nextStepFactor"))
+        {
+            nextStepFactor_ =
+                checkedRead::get
+                (
+                    dict, "nextStepFactor", dimless, checkedRead::positive()
+                ).value();
+        }
+        restored_ = true;
+    }
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -86,37 +139,44 @@ void Foam::subStepController::setDeltaT(Time& runTime) const
     // 0.7 after every sub-step of more than max(maxIter/2, 2) iterations,
     // adaptiveTimeStepControls::shrinkIterations): stopped
     // before it is set (Time::adjustDeltaT divides by it)
+    // The first step of a run keeps its deltaT (controlDict's, or
+    // uniform/time's on a restart) unless the state of the last accepted
+    // sub-step was read (restored_)
     if
     (
-        controls_.adjustTimeStep()
-     && runTime.timeIndex() > runTime.startTimeIndex()
+        !controls_.adjustTimeStep()
+     || (runTime.timeIndex() <= runTime.startTimeIndex() && !restored_)
     )
     {
-        scalar next =
-            controls_.nextDeltaT
-            (
-                lastDeltaT_, lastMaxChange_, lastIterations_
-            );
-        if (nextStepFactor_ < GREAT)
-        {
-            next = min(next, nextStepFactor_*lastDeltaT_);
-        }
-        if (!(next >= controls_.minDeltaT()))
-        {
-            OStringStream when;
-            when<< "at time " << runTime.timeName();
-            shrunkBelowMinDeltaT(next, when.str());
-        }
+        return;
     }
 
-    controls_.setDeltaT
+    scalar next =
+        controls_.nextDeltaT
+        (
+            lastDeltaT_, lastMaxChange_, lastIterations_
+        );
+    if (nextStepFactor_ < GREAT)
+    {
+        next = min(next, nextStepFactor_*lastDeltaT_);
+    }
+    if (!(next >= controls_.minDeltaT()))
+    {
+        OStringStream when;
+        when<< "at time " << runTime.timeName();
+        shrunkBelowMinDeltaT(next, when.str());
+    }
+
+    // As before the restart's state was kept (2026-12-05): the step of the
+    // rule, fitted to the write times by Time, then limitNextStep's limit
+    // if that step is above it
+    runTime.setDeltaT
     (
-        runTime, lastDeltaT_, lastMaxChange_, lastIterations_
+        controls_.nextDeltaT(lastDeltaT_, lastMaxChange_, lastIterations_)
     );
     if
     (
-        nextStepFactor_ < GREAT && controls_.adjustTimeStep()
-     && runTime.timeIndex() > runTime.startTimeIndex()
+        nextStepFactor_ < GREAT
      && runTime.deltaTValue() > nextStepFactor_*lastDeltaT_
     )
     {
@@ -311,6 +371,23 @@ void Foam::subStepController::end()
 {
     lastMaxChange_ =
         maxChange_*DeltaT_/max(lastDeltaT_, SMALL)/max(nSubSteps_, 1);
+}
+
+
+bool Foam::subStepController::writeData(Ostream& os) const
+{
+    // Every digit: the restarted run's steps are sized from these
+    const int precision =
+        os.precision(std::numeric_limits<scalar>::max_digits10);
+    os.writeEntry("lastDeltaT", lastDeltaT_);
+    os.writeEntry("lastMaxChange", lastMaxChange_);
+    os.writeEntry("lastIterations", lastIterations_);
+    if (nextStepFactor_ < GREAT)
+    {
+        os.writeEntry("nextStepFactor", nextStepFactor_);
+    }
+    os.precision(precision);
+    return os.good();
 }
 
 
