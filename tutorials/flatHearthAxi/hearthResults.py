@@ -139,7 +139,7 @@ def main():
     eb = ht.energy_balance('log.ahcFoam')
     if eb:
         sector = ht.wedge_to_full()     # the balance is per wedge sector
-        water = sector*eb['latent']/ht.latent_heat()
+        water = sector*eb['evaporated']     # the log's: initial - now
         say('Energy balance at t = %s (log.ahcFoam; whole hearth = %.2f'
             ' x the wedge):' % (hours(eb['time']), sector))
         say('  heat in through the fire %.4g MJ, stored %.4g MJ'

@@ -248,11 +248,11 @@ def summary():
         out.extend(['  ' + block[0]] + ['    ' + l for l in block[1:]])
         w('')
         eb = ht.energy_balance(log)
-        L = ht.latent_heat(case + '/constant/porousProperties')
         fig.add('heatIn_%s' % case, eb['in']/1e6, 'MJ')
         fig.add('farFraction_%s' % case, -100*eb['in_far']/eb['in'], '%')
-        fig.add('waterEvaporated_%s' % case,
-                eb['latent']/L if eb['latent'] else 0, 'kg')
+        # the log's initial - now (latent/L is it only for energyConsistent:
+        # about half of it for thesisCompatible's (rho_l + rho_v)/2)
+        fig.add('waterEvaporated_%s' % case, eb['evaporated'], 'kg')
         fig.add('latentFraction_%s' % case, 100*eb['latent']/eb['stored'],
                 '%')
         fig.add('largestRelativeImbalance_%s' % case,
