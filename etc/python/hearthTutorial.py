@@ -184,7 +184,7 @@ def read_axis_set(timeDir, name='axis'):
 def energy_balance_blocks(log):
     """Every 'Energy balance at t = ...' block of an ahcFoam log, as lists
     of lines (the heading first, up to the first blank line)."""
-    with open(log) as f:
+    with open(log, errors='replace') as f:   # a log: never a traceback
         lines = f.read().splitlines()
     blocks = []
     for i, l in enumerate(lines):
@@ -273,7 +273,7 @@ def pendular_balances(log):
     out_<patch>, inDomain, stored, bdf2 (the BDF2 term C^N of the stored
     change, with timeScheme BDF2 only), out, imbalance, relative; nOutside (cells
     above the pendular range), alphaLMin, alphaLMax."""
-    with open(log) as f:
+    with open(log, errors='replace') as f:   # a log: never a traceback
         text = f.read()
     out = []
     blocks = re.split(r'\n(?=Water balance at t = )', text)[1:]
@@ -363,7 +363,7 @@ def log_stats(log):
     """Steps, rejected sub-steps, last ExecutionTime and ClockTime [s] of
     an ahcFoam or pendularFoam log."""
     steps, rejected, exe, clock = 0, 0, None, None
-    with open(log) as f:
+    with open(log, errors='replace') as f:   # a log: never a traceback
         for line in f:
             m = re.match(r'^(ahcFoam|pendularFoam): deltaT = .*rejected = '
                          r'(\d+)', line)

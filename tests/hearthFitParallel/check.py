@@ -77,7 +77,8 @@ for name, msg in (('nProcs0', r"Keyword 'nProcs' = 0 is outside its valid range 
                               'numberOfSubdomains 2'),
                   ('parallel1', "'launcher' = .*-parallel with nProcs 1"),
                   ('background', "'launcher' = .*ends in '&'"),
-                  ('unbalancedQuote', "'launcher' = .*not a valid shell command: .*Unterminated quoted string"),
+                  ('unbalancedQuote', "'launcher' = .*not a valid shell command: .*"
+                                      "(Unterminated quoted string|unexpected EOF)"),  # dash, bash
                   ('timeLimitTiny', r"'timeLimit' = 1e-09 s .*valid 0 \(no limit\) or \[1, inf\) s")):
     with open('bad/log.' + name) as f:
         txt = f.read()

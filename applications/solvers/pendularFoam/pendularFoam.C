@@ -117,6 +117,12 @@ int main(int argc, char *argv[])
     // restarted run takes its first step by backward Euler, as any run's
     // first, and its balances' BDF2 term starts at 0 there
     // (tests/hearthCaseResumeCoupled)
+    // A restart's local error limit (uniform/subStepController) holds only
+    // where this run makes local error estimates: BDF2 with adaptive steps
+    if (scheme != timeScheme::BDF2 || !stepControls.adjustTimeStep())
+    {
+        subSteps.clearNextStepLimit();
+    }
     if (scheme == timeScheme::BDF2 && runTime.timeIndex() > 0)
     {
         Info<< "BDF2: restarted at t = " << runTime.timeName()

@@ -5,6 +5,7 @@
 #include "subStepController.H"
 #include "checkedRead.H"
 #include "OStringStream.H"
+#include "PstreamReduceOps.H"
 #include <limits>
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
@@ -74,8 +75,25 @@ Foam::subStepController::subStepController
     totalIter_(0),
     maxChange_(0)
 {
-    // A restarted run: the state its last write saved (writeData)
-    if (headerOk())
+    // A restarted run: the state its last write saved (writeData), on
+    // every rank or on none (a case copied in part: the ranks would take
+    // different steps, then wait for each other at the next write)
+    const bool present = headerOk();
+    if
+    (
+        returnReduce(present, orOp<bool>())
+     != returnReduce(present, andOp<bool>())
+    )
+    {
+        FatalErrorInFunction
+            << "The sub-step state " << objectPath() << " is "
+            << (present ? "here" : "missing") << " but not on every"
+            << " processor: restore it from the run's copy, or remove"
+            << " every processor*/" << time().timeName() << "/uniform/"
+            << typeName << " to start from controlDict's deltaT"
+            << exit(FatalError);
+    }
+    if (present)
     {
         const dictionary dict(readStream(typeName));
         close();
@@ -105,6 +123,12 @@ Foam::subStepController::subStepController
                 ).value();
         }
         restored_ = true;
+        Info<< "Restart: the first step sized as the run's next one would"
+            << " have been, from " << time().timeName() << "/uniform/"
+            << typeName << " (the last sub-step: " << lastDeltaT_
+            << " s, " << lastIterations_ << " iterations, max |dT| "
+            << lastMaxChange_ << " K); remove that file to start from"
+            << " controlDict's deltaT" << endl;
     }
 }
 

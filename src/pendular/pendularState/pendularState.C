@@ -1257,9 +1257,11 @@ void Foam::pendularState::checkOpenPatches() const
 namespace
 {
     // A patch value as a Function1 of time when the condition holds one
-    // (uniformFixedValue), rebuilt from the condition's own entries as it
-    // writes them for a restart (v1912's uniformFixedValue keeps its
-    // Function1 private); null otherwise
+    // (uniformFixedValue with a Function1: a constant, a table, ...),
+    // rebuilt from the condition's own entries as it writes them for a
+    // restart (v1912's uniformFixedValue keeps its Function1 private); null
+    // otherwise (a condition of another type, or a PatchFunction1 that is
+    // no Function1: nonuniform values, mappedFile: checked at every step)
     Foam::autoPtr<Foam::Function1<Foam::scalar>> uniformHistory
     (
         const Foam::fvPatchScalarField& pf
@@ -1273,6 +1275,26 @@ namespace
         pf.write(os);
         Foam::IStringStream is(os.str());
         const Foam::dictionary dict(is);
+        const Foam::entry* e = dict.findEntry("uniformValue");
+        if (!e || e->isDict())
+        {
+            return nullptr;
+        }
+        Foam::ITstream& value = e->stream();
+        const Foam::token first(value.size() ? value[0] : Foam::token());
+        if
+        (
+            !first.isNumber()
+         && !(
+                first.isWord()
+             && Foam::Function1<Foam::scalar>::dictionaryConstructorTablePtr_
+             && Foam::Function1<Foam::scalar>::dictionaryConstructorTablePtr_
+                    ->found(first.wordToken())
+            )
+        )
+        {
+            return nullptr;
+        }
         return Foam::Function1<Foam::scalar>::New("uniformValue", dict);
     }
 }
@@ -1296,9 +1318,6 @@ void Foam::pendularState::checkOpenPatchHistories() const
     {
         const fvPatchScalarField& pwp = pw_.boundaryField()[patchi];
         const fvPatchScalarField& Tp = T_.boundaryField()[patchi];
-        const auto* fire = isA<fireTemperatureFvPatchScalarField>(Tp);
-        const autoPtr<Function1<scalar>> pwHistory(uniformHistory(pwp));
-        const autoPtr<Function1<scalar>> THistory(uniformHistory(Tp));
         if
         (
             (
@@ -1306,7 +1325,16 @@ void Foam::pendularState::checkOpenPatchHistories() const
              && kind_[patchi] != patchKind::semiPermeable
             )
          || pwp.empty()
-         || !(pwHistory || pwp.type() == "fixedValue")
+        )
+        {
+            continue;
+        }
+        const auto* fire = isA<fireTemperatureFvPatchScalarField>(Tp);
+        const autoPtr<Function1<scalar>> pwHistory(uniformHistory(pwp));
+        const autoPtr<Function1<scalar>> THistory(uniformHistory(Tp));
+        if
+        (
+            !(pwHistory || pwp.type() == "fixedValue")
          || !(fire || THistory || Tp.type() == "fixedValue")
          || !(pwHistory || fire || THistory)    // constant: the start's check
         )

@@ -506,10 +506,17 @@ void Foam::liquidFlow::checkStart(const volScalarField& p) const
           ? checkedRead::function1CheckTimes(pl_[patchi], mesh_.time())
           : scalarList(1, t0)
         );
+        const scalar t1 = max(t0, mesh_.time().endTime().value());
         forAll(pp, i)
         {
             for (const scalar t : times)
             {
+                // a record longer than the run: its rows after the end
+                // are never reached
+                if (t < t0 || t > t1)
+                {
+                    continue;
+                }
                 const scalar pl =
                     pl_.set(patchi)
                   ? pl_[patchi].value(t)
