@@ -344,10 +344,10 @@ bool Foam::pendularNewton::unknownsRoundOff
     static const scalar eps = std::numeric_limits<scalar>::epsilon();
     static const scalar hRel = Foam::sqrt(eps);
     // The scaled residuals' quantities: water, gas (gasResidual), energy
-    auto combine = [](const scalar* R, scalar* G)
+    auto combine = [&res, c](const scalar* R, scalar* G)
     {
         G[0] = R[0];
-        G[1] = gasResidual(R);
+        G[1] = gasResidual(res, c, R);
         G[2] = R[2];
     };
     scalar R0[3], G0[3];
@@ -1320,7 +1320,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         FixedList<scalar, 3> r(scalar(0));
         for (label c = 0; c < nCells; ++c)
         {
-            const scalar Rg = gasResidual(&R[3*c]);
+            const scalar Rg = gasResidual(res, c, &R[3*c]);
             r[0] = max(r[0], mag(R[3*c])/(sW[c]*WTolAbs_));
             r[1] = max(r[1], mag(Rg)/(sG[c]*pTol_));
             r[2] = max(r[2], mag(R[3*c + 2])/(sE[c]*TTol_));
@@ -1351,7 +1351,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
             {
                 const bool liquidOnly =
                     res.phases()[c] == pendularResidual::liquidOnly;
-                const scalar Rg = mag(gasResidual(&R[3*c]));
+                const scalar Rg = mag(gasResidual(res, c, &R[3*c]));
                 const scalar tol = sG[c]*pTol_;
                 if (Rg < tol || liquidOnly)
                 {
@@ -1416,7 +1416,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
                 const scalar Rc[3] =
                 {
                     mag(R[3*c]),
-                    mag(gasResidual(&R[3*c])),
+                    mag(gasResidual(res, c, &R[3*c])),
                     mag(R[3*c + 2])
                 };
                 scalar tol[3] =
