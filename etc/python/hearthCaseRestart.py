@@ -280,8 +280,9 @@ def restartPoint(case):
     # a later folder whose balance the interrupt cut short in the last log
     # (its heading printed, not the whole block) is cut short, whole on
     # disk or not: the resumed run writes it again
+    whole = balanceTimes(log, solver)      # the log parsed once
     cut = [w for w in headingTimes(log, solver)
-           if not any(same(w, b) for b in balanceTimes(log, solver))]
+           if not any(same(w, b) for b in whole)]
     looks = [n for n in later if diskWhole(roots, n, ref)
              and not any(same(float(n), w) for w in cut)]
     if looks:
