@@ -293,12 +293,16 @@ Foam::scalar Foam::pendularNewton::gasRoundOff
 {
     // The storage: S = (a0 M - M^n) V/dt per balance, a0 M V/dt of the
     // water sW W, of the air at most sG p_g (sG p_a); the old storage from
-    // their difference with S
+    // their difference with S. The water's terms where the gas residual
+    // holds R_w (gasResidual)
+    const bool water = withWater(res, c, &x[3*c]);
     scalar S[3];
     res.cellTerm(c, &x[3*c], S);
     const scalar Wnew = sW*x[3*c + 2];
     const scalar Anew = sG*(x[3*c + 1] + pRef);
-    scalar sum = mag(Wnew) + mag(Wnew - S[0]) + mag(Anew) + mag(Anew - S[1]);
+    scalar sum =
+        mag(Anew) + mag(Anew - S[1])
+      + (water ? mag(Wnew) + mag(Wnew - S[0]) : 0);
 
     // The fluxes of its faces (as coupledResidual::cellResidual)
     const labelList& own = res.mesh().faceOwner();
@@ -324,7 +328,7 @@ Foam::scalar Foam::pendularNewton::gasRoundOff
             {
                 res.boundaryFlux(facei, &x[3*c], F);
             }
-            sum += mag(F[0]) + mag(F[1]);
+            sum += (water ? mag(F[0]) : 0) + mag(F[1]);
         }
     );
     return gasFloorEps_*std::numeric_limits<scalar>::epsilon()*sum;
@@ -344,10 +348,10 @@ bool Foam::pendularNewton::unknownsRoundOff
     static const scalar eps = std::numeric_limits<scalar>::epsilon();
     static const scalar hRel = Foam::sqrt(eps);
     // The scaled residuals' quantities: water, gas (gasResidual), energy
-    auto combine = [&res, c](const scalar* R, scalar* G)
+    auto combine = [&res, c, &x](const scalar* R, scalar* G)
     {
         G[0] = R[0];
-        G[1] = gasResidual(res, c, R);
+        G[1] = gasResidual(res, c, &x[3*c], R);
         G[2] = R[2];
     };
     scalar R0[3], G0[3];
@@ -1320,7 +1324,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         FixedList<scalar, 3> r(scalar(0));
         for (label c = 0; c < nCells; ++c)
         {
-            const scalar Rg = gasResidual(res, c, &R[3*c]);
+            const scalar Rg = gasResidual(res, c, &x[3*c], &R[3*c]);
             r[0] = max(r[0], mag(R[3*c])/(sW[c]*WTolAbs_));
             r[1] = max(r[1], mag(Rg)/(sG[c]*pTol_));
             r[2] = max(r[2], mag(R[3*c + 2])/(sE[c]*TTol_));
@@ -1334,12 +1338,14 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         // The gas residual of a cell whose pores are nearly full of liquid
         // (tutorials/wetHearthCoupled, alpha_l0 >= 0.9): its tolerance,
         // pTol of air, V phi (1 - alpha) M_a pTol/(R T dt), falls with
-        // 1 - alpha below the round-off of its terms, whose largest is the
-        // stored water, V W/dt: measured there 0.1 to 4.3 times epsilon
-        // times the sum of their magnitudes for 30 iterations, updates
-        // 1e-5 tolerances. Judged against that floor (gasRoundOff) where
-        // it is higher, once the water and the energy are converged (the
-        // floor costs one flux evaluation per face of those cells)
+        // 1 - alpha below the round-off of its terms: measured there, with
+        // the gas residual R_w + R_a (whose largest term is the stored
+        // water, V W/dt), 0.1 to 4.3 times epsilon times the sum of their
+        // magnitudes for 30 iterations, updates 1e-5 tolerances. Judged
+        // against the floor of its terms (gasRoundOff: the air's, and the
+        // water's where it holds R_w) where it is higher, once the water
+        // and the energy are converged (the floor costs one flux
+        // evaluation per face of those cells)
         out.nGasFloor = 0;
         scalarField gasFloor;
         if (r[0] < 1 && r[2] < 1 && r[1] >= 1)
@@ -1351,7 +1357,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
             {
                 const bool liquidOnly =
                     res.phases()[c] == pendularResidual::liquidOnly;
-                const scalar Rg = mag(gasResidual(res, c, &R[3*c]));
+                const scalar Rg = mag(gasResidual(res, c, &x[3*c], &R[3*c]));
                 const scalar tol = sG[c]*pTol_;
                 if (Rg < tol || liquidOnly)
                 {
@@ -1416,7 +1422,7 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
                 const scalar Rc[3] =
                 {
                     mag(R[3*c]),
-                    mag(gasResidual(res, c, &R[3*c])),
+                    mag(gasResidual(res, c, &x[3*c], &R[3*c])),
                     mag(R[3*c + 2])
                 };
                 scalar tol[3] =

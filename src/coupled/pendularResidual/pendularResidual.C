@@ -488,19 +488,25 @@ Foam::label Foam::pendularResidual::switchPhases
             held[c] = pn <= 0 || pBubble > pn;
             if (pn <= 0 || pBubble > (1 + (wide ? hp : 0))*pn)
             {
-                const scalar alpha = 1 - gasSeed;
-                xc[2] = medium_.waterContent(alpha, T, phi);
-                xc[1] =
-                    xc[1]
-                  + medium_.liquidFlowPtr()->capillaryPressure().pc
+                // The gas fraction that the gas at the bubble pressure
+                // implies, 1 - S(p_b - p_l), within [seedMin, gasSeed]
+                // (issue 14, see the header)
+                const capillaryPressureModel& pcLaw =
+                    medium_.liquidFlowPtr()->capillaryPressure();
+                const scalar Tl =
+                    min
                     (
-                        alpha,
-                        min
-                        (
-                            max(T, medium_.minimumTemperature()),
-                            medium_.dryOutTemperature()
-                        )
+                        max(T, medium_.minimumTemperature()),
+                        medium_.dryOutTemperature()
                     );
+                const scalar seedImplied =
+                    pn <= 0
+                  ? gasSeed
+                  : 1 - pcLaw.saturation(pBubble - (xc[1] + pRef_), Tl);
+                const scalar alpha =
+                    1 - min(gasSeed, max(min(seedMin_, gasSeed), seedImplied));
+                xc[2] = medium_.waterContent(alpha, T, phi);
+                xc[1] = xc[1] + pcLaw.pc(alpha, Tl);
                 phases[c] = bothPhases;
                 switched[c] = true;
                 ++nSwitched;
