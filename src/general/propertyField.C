@@ -6,6 +6,35 @@
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
+Foam::word Foam::cellFieldInstance(const fvMesh& mesh, const word& name)
+{
+    const Time& runTime = mesh.time();
+    const word start
+    (
+        runTime.timeName
+        (
+            runTime.controlDict().getOrDefault<scalar>
+            (
+                "startTime", runTime.startTime().value()
+            )
+        )
+    );
+    for (const word& instance : {runTime.timeName(), start})
+    {
+        IOobject io
+        (
+            name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE,
+            false
+        );
+        if (io.typeHeaderOk<volScalarField>(true))
+        {
+            return instance;
+        }
+    }
+    return word::null;
+}
+
+
 Foam::volScalarField Foam::propertyField
 (
     const fvMesh& mesh,
@@ -13,16 +42,17 @@ Foam::volScalarField Foam::propertyField
     const dimensionedScalar& uniformValue
 )
 {
+    const word instance(cellFieldInstance(mesh, name));
     IOobject io
     (
         name,
-        mesh.time().timeName(),
+        instance.empty() ? mesh.time().timeName() : instance,
         mesh,
         IOobject::MUST_READ,
         IOobject::NO_WRITE
     );
 
-    if (io.typeHeaderOk<volScalarField>(true))
+    if (!instance.empty())
     {
         Info<< "    " << name << ": cell field from " << io.objectPath()
             << endl;
@@ -40,22 +70,20 @@ bool Foam::readCellValues
 (
     const fvMesh& mesh,
     const word& name,
-    scalarField& values
+    scalarField& values,
+    word& instance
 )
 {
-    IOobject io
-    (
-        name,
-        mesh.time().timeName(),
-        mesh,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-    if (!io.typeHeaderOk<volScalarField>(true))
+    const word found(cellFieldInstance(mesh, name));
+    if (found.empty())
     {
         return false;
     }
+    instance = found;
+    IOobject io
+    (
+        name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
     volScalarField fld(io, mesh);
     values = fld.primitiveField();
     return true;

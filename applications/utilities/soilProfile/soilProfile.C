@@ -68,7 +68,10 @@ Description
     - values: not finite, or outside the valid range at any cell (the
       depth and the position of the first bad cell are named); the water
       content is checked against the porosity of each cell: the one
-      written by the same run, else 0/porosity, else the porosity of
+      written by the same run, else the porosity field of the time
+      profiled, else of the start time (a case restarted from a later
+      time keeps its material fields there, as the solvers read them:
+      src/general/propertyField), else the porosity of
       constant/soilProperties (or porousProperties); a porosity written alone is checked
       against the existing water content in the same way;
     - existing fields (a FatalError listing them): a field of the start
@@ -76,8 +79,9 @@ Description
       header) is never replaced unless -overwrite is given; fields
       written by an earlier soilProfile run are replaced.
 
-    The fields go to the start time directory (controlDict startTime,
-    usually 0/), with zeroGradient on the non-constraint patches (ahcFoam
+    The fields go to the time directory the solver would start from
+    (controlDict startFrom: usually startTime, 0/; latestTime on a
+    restarted case), with zeroGradient on the non-constraint patches (ahcFoam
     uses the cell values only). -parallel writes each processor's part.
 
     Reading, checking and evaluation: src/soil/soilProfileFields.

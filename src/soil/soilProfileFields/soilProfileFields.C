@@ -516,14 +516,15 @@ void Foam::soilProfileFields::porosityOf
     const label iPor = 0;
     const Time& runTime = mesh_.time();
     scalar uniform = 0;
+    word instance;
     if (values_.set(iPor))
     {
         porosity = values_[iPor];
         source = "'porosity' of " + dict_.name();
     }
-    else if (readCellValues(mesh_, "porosity", porosity))
+    else if (readCellValues(mesh_, "porosity", porosity, instance))
     {
-        source = runTime.timeName()/"porosity";
+        source = instance/"porosity";
     }
     else if (soilFileValue("porosity", uniform))
     {
@@ -546,15 +547,15 @@ void Foam::soilProfileFields::porosityOf
 void Foam::soilProfileFields::checkPorosityHoldsWater() const
 {
     const label iPor = 0;
-    const Time& runTime = mesh_.time();
     const vectorField& centres = mesh_.C().primitiveField();
 
     scalarField water(mesh_.nCells(), Zero);
     string source;
     scalar uniform = 0;
-    if (readCellValues(mesh_, "waterContent", water))
+    word instance;
+    if (readCellValues(mesh_, "waterContent", water, instance))
     {
-        source = runTime.timeName()/"waterContent";
+        source = instance/"waterContent";
     }
     else if (soilFileValue("waterContent", uniform))
     {
