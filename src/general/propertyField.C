@@ -8,30 +8,27 @@
 
 Foam::word Foam::cellFieldInstance(const fvMesh& mesh, const word& name)
 {
-    const Time& runTime = mesh.time();
-    const word start
+    // The latest time at or before the run's that holds the file
+    // (Time::findInstance): the solvers do not write the material fields,
+    // so a run restarted from latestTime or from a startTime reads those
+    // of the first run's start, or the ones soilProfile wrote at a later
+    // time (review 2026-12-05d: controlDict's startTime alone missed both)
+    const word instance
     (
-        runTime.timeName
+        mesh.time().findInstance
         (
-            runTime.controlDict().getOrDefault<scalar>
-            (
-                "startTime", runTime.startTime().value()
-            )
+            mesh.dbDir(), name, IOobject::READ_IF_PRESENT
         )
     );
-    for (const word& instance : {runTime.timeName(), start})
+    if (instance.empty() || instance == mesh.time().constant())
     {
-        IOobject io
-        (
-            name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE,
-            false
-        );
-        if (io.typeHeaderOk<volScalarField>(true))
-        {
-            return instance;
-        }
+        return word::null;
     }
-    return word::null;
+    IOobject io
+    (
+        name, instance, mesh, IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    return io.typeHeaderOk<volScalarField>(true) ? instance : word::null;
 }
 
 
