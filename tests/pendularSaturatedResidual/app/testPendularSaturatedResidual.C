@@ -32,6 +32,15 @@ Description
        liquidOnly neighbour of 4d's cell from the forward-difference
        Jacobian's entries, 10 eps sum_j |dR/dx_j| |x_j| (1e-4; the old
        forward step crossing S_l = 1: 0.49);
+    4f. pendularNewton::solveCellWater (public for this check) on a cell
+       at the state of the SIGFPE of tutorials/wetHearthCoupled (p_g =
+       2.86 bar, 441.5 K: p_a < 0, its rho_g falling through zero as W
+       adds vapour), its neighbours beyond rho_g = 0: from a water whose
+       bracket crosses the pole of omega = rho_w/rho_g, and from one near
+       the kink whose root lies beyond it, no local solve (0, x unchanged,
+       finite, rho_g > 0); at p_g = 9 bar the same cell solved (1, |R_w|
+       below tol). Without the rho_g > 0 guard: 1 at rho_g = -4.4e-16
+       (the pole) and at rho_g = -0.0197 kg/m3;
     4c. Newton on a liquid-only sub-step of 1e-3 s (every cell liquidOnly,
        p_l 100 Pa above p_ref): quadratic, one step from the solution
        shifted by s (1000 Pa, 1 K) leaves an error of p_l falling at least
@@ -820,9 +829,10 @@ int main(int argc, char *argv[])
     //     and the same cell at p_g = 9 bar (p_a > 0): solved (1), |g|
     //     below tol, the guard not in the way. Planted (the guard
     //     removed, gasDense = true; measured 2026-12-05): pole returns 1
-    //     at W_pole (rho_g = -4.4e-16 kg/m3, omega = -8.3e15: the regula
-    //     falsi converged onto the pole, as in the find; no SIGFPE since
-    //     pendularState::closure's omega at rho_g = 0 exactly), beyond
+    //     at W_pole (rho_g = -4.4e-16 kg/m3, omega = -8.3e15, R_w = 1.7e7
+    //     kg/s: the regula falsi converged onto the pole, as in the find;
+    //     no SIGFPE: pendularState::closure sets omega 0 at rho_g = 0
+    //     exactly, and here rho_g is a round-off below it), beyond
     //     returns 1 at 19.9 W_s (rho_g = -0.0197): 6 checks fail
     section("4f. Local water solve across rho_g = 0 (solveCellWater)");
     {
