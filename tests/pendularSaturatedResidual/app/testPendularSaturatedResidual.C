@@ -32,6 +32,15 @@ Description
        liquidOnly neighbour of 4d's cell from the forward-difference
        Jacobian's entries, 10 eps sum_j |dR/dx_j| |x_j| (1e-4; the old
        forward step crossing S_l = 1: 0.49);
+    4f. pendularNewton::solveCellWater (public for this check) on a cell
+       at the state of the SIGFPE of tutorials/wetHearthCoupled (p_g =
+       2.86 bar, 441.5 K: p_a < 0, its rho_g falling through zero as W
+       adds vapour), its neighbours beyond rho_g = 0: from a water whose
+       bracket crosses the pole of omega = rho_w/rho_g, and from one near
+       the kink whose root lies beyond it, no local solve (0, x unchanged,
+       finite, rho_g > 0); at p_g = 9 bar the same cell solved (1, |R_w|
+       below tol). Without the rho_g > 0 guard: 1 at rho_g = -4.4e-16
+       (the pole) and at rho_g = -0.0197 kg/m3;
     4c. Newton on a liquid-only sub-step of 1e-3 s (every cell liquidOnly,
        p_l 100 Pa above p_ref): quadratic, one step from the solution
        shifted by s (1000 Pa, 1 K) leaves an error of p_l falling at least
@@ -798,6 +807,154 @@ int main(int argc, char *argv[])
             << ref[2] << ")" << endl;
         checkAbs("round-off floor beside S = 1 vs Jacobian (rel)",
             floorErr, 0, 1e-4);
+    }
+
+    // 4f. pendularNewton::solveCellWater across the pole of omega =
+    //     rho_w/rho_g (its guard: every trial state's rho_g > 0). The
+    //     state of the find (tutorials/wetHearthCoupled's
+    //     hearth_pendSat_1_1e-14 on 200 cells at t = 5220.80 s: a cell at
+    //     441 K and p_g = 2.86 bar, whose gas density rho_g = rho_w + M_a
+    //     (p_g - p_w)/(R T) vanishes at p_w = M_a p_g/(M_a - M_w) = 7.54
+    //     bar): every cell two-phase at p_g = 2.86 bar and T = 441.5 K
+    //     (this soil's p_w(T, W) stays below 7.54 bar at 441 K, p_wsat
+    //     = 7.519 bar: at 441.5 K it crosses it on the wet side of the
+    //     kink, W_pole = 1.24 W_s), the neighbours beyond the pole (20 W_s,
+    //     p_a < 0, rho_g < 0: a region of the iterate below its vapour
+    //     pressure). With the guard (documented: 0, x unchanged):
+    //       pole:   W0 just above W_pole/2 (rho_g > 0), the bracket's
+    //               first doubling 2 W0 across the pole, where g = R_w
+    //               goes from -inf to +inf;
+    //       beyond: W0 = 1.1 W_s (near the kink, rho_g > 0), the old water
+    //               2 W_s: the root of g at 19.9 W_s, beyond the pole;
+    //     and the same cell at p_g = 9 bar (p_a > 0): solved (1), |g|
+    //     below tol, the guard not in the way. Planted (the guard
+    //     removed, gasDense = true; measured 2026-12-05): pole returns 1
+    //     at W_pole (rho_g = -4.4e-16 kg/m3, omega = -8.3e15, R_w = 1.7e7
+    //     kg/s: the regula falsi converged onto the pole, as in the find;
+    //     no SIGFPE: pendularState::closure sets omega 0 at rho_g = 0
+    //     exactly, and here rho_g is a round-off below it), beyond
+    //     returns 1 at 19.9 W_s (rho_g = -0.0197): 6 checks fail
+    section("4f. Local water solve across rho_g = 0 (solveCellWater)");
+    {
+        const scalar Tf = 441.5, pgPole = 2.86e5;
+        const label c = 1;
+        const labelList two(n, label(pendularResidual::bothPhases));
+        const scalar Ws = medium.kinkWater(phi[c], Tf);
+        const scalar WNbr = 20*Ws;
+        pendularNewton newtonW
+        (
+            mesh, mesh.solutionDict().subDict("coupled"), 1e-6, 1e-3, 1e-8,
+            0.1, 50
+        );
+        // Every cell at (Tf, pg, WNbr) but c at Wc
+        auto hot = [&](const scalar pg, const scalar Wc)
+        {
+            scalarField xh(3*n);
+            forAll(two, ci)
+            {
+                xh[3*ci] = Tf;
+                xh[3*ci + 1] = pg - pRef;
+                xh[3*ci + 2] = ci == c ? Wc : WNbr;
+            }
+            return xh;
+        };
+        // The water of c at rho_g = 0 (bisection on the closure's rho_g,
+        // decreasing in W at p_a < 0)
+        scalar Wpole = 0;
+        {
+            pendularResidual r
+            (
+                medium, T, p, pw, pRef, hot(pgPole, Ws), scalarField(n, 0.01),
+                dt, coupledResidual::differenceScheme::forward, two
+            );
+            scalar xc[3] = {Tf, pgPole - pRef, Ws};
+            scalar lo = Ws, hi = WNbr;
+            for (label k = 0; k < 200 && hi - lo > 4*SMALL*hi; ++k)
+            {
+                xc[2] = 0.5*(lo + hi);
+                (r.state(c, xc).rhoG > 0 ? lo : hi) = xc[2];
+            }
+            Wpole = lo;
+        }
+        Info<< "cell " << c << " at " << Tf << " K, p_g " << pgPole
+            << " Pa: W_s " << Ws << " kg/m3, rho_g = 0 at W = "
+            << Wpole/Ws << " W_s; neighbours at " << WNbr/Ws << " W_s"
+            << endl;
+
+        // solveCellWater of c from Wc (old water Wold): its status into
+        // status; checks that x is finite, rho_g(x) > 0, and either status
+        // 0 with x unchanged (guarded) or status 1 with |R_w| < tol
+        auto localSolve =
+        [&]
+        (
+            const char* what, const scalar pg, const scalar Wc,
+            const scalar Wold, const label expected
+        )
+        {
+            scalarField x1(hot(pg, Wc));
+            const scalarField xIn(x1);
+            pendularResidual r
+            (
+                medium, T, p, pw, pRef, hot(pg, Wold), scalarField(n, 0.01),
+                dt, coupledResidual::differenceScheme::forward, two
+            );
+            const scalarField xNbr(r.neighbourStates(x1));
+            // tol: 1e-8 kg/m3 of the cell's water over the step
+            const scalar tol = 1e-8*mesh.V()[c]/dt;
+            scalar Rc[3];
+            if (expected == 0)
+            {
+                // the setting: rho_g > 0 at Wc, <= 0 at the bracket's
+                // first doubling 2 Wc (g(Wc) < 0 here)
+                scalar xc[3] = {Tf, pg - pRef, Wc};
+                const scalar rhoG0 = r.state(c, xc).rhoG;
+                xc[2] = 2*Wc;
+                const scalar rhoG2 = r.state(c, xc).rhoG;
+                r.cellResidual(c, xIn, xNbr, Rc);
+                checkTrue
+                (
+                    fmt("%s: rho_g(W0) > 0 >= rho_g(2 W0), R_w(W0) < 0", what),
+                    rhoG0 > 0 && rhoG2 <= 0 && Rc[0] < 0, rhoG2, 0,
+                    "rho_g(2 W0) [kg/m3]"
+                );
+            }
+            const label status = newtonW.solveCellWater(r, c, tol, x1, xNbr);
+            const pendularState::cellState s = r.state(c, &x1[3*c]);
+            r.cellResidual(c, x1, xNbr, Rc);
+            bool finite = std::isfinite(Rc[0]);
+            forAll(x1, k)
+            {
+                finite = finite && std::isfinite(x1[k]);
+            }
+            Info<< what << ": status " << status << ", W " << x1[3*c + 2]/Ws
+                << " W_s, rho_g " << s.rhoG << " kg/m3, omega " << s.omega
+                << ", R_w " << Rc[0] << " kg/s (tol " << tol << ")" << endl;
+            checkTrue
+            (
+                fmt("%s: status %d", what, int(expected)),
+                status == expected, status, expected, "status"
+            );
+            checkTrue
+            (
+                fmt("%s: x and R_w finite, rho_g(x) > 0", what),
+                finite && std::isfinite(s.omega) && s.rhoG > 0, s.rhoG, 0,
+                "rho_g [kg/m3]"
+            );
+            if (expected == 0)
+            {
+                checkAbs
+                (
+                    fmt("%s: x unchanged", what), max(mag(x1 - xIn)), 0, 0
+                );
+            }
+            else
+            {
+                checkAbs(fmt("%s: |R_w| [kg/s]", what), Rc[0], 0, tol);
+            }
+        };
+        localSolve("pole", pgPole, 0.5*(1 + 1e-5)*Wpole, 0.5*Ws, 0);
+        localSolve("beyond", pgPole, 1.1*Ws, 2*Ws, 0);
+        localSolve("p_g 9 bar", 9e5, 1.1*Ws, 2*Ws, 1);
     }
 
     // 4c. Newton on a liquid-only step: every cell liquidOnly, p_l 100 Pa
