@@ -81,6 +81,7 @@ Description
 #include "subStepController.H"
 #include "OStringStream.H"
 #include "variableStepBdf2.H"
+#include "pendularBdf2Levels.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"
 #include "upwind.H"
@@ -112,23 +113,49 @@ int main(int argc, char *argv[])
     #include "createBalances.H"
     #include "createNewton.H"
 
-    // BDF2's history (the unknowns and amounts at the step before the
-    // start, the last steps' lengths) is not in the time folder: a
-    // restarted run takes its first step by backward Euler, as any run's
-    // first, and its balances' BDF2 term starts at 0 there
-    // (tests/hearthCaseResumeCoupled)
     // A restart's local error limit (uniform/subStepController) holds only
     // where this run makes local error estimates: BDF2 with adaptive steps
     if (scheme != timeScheme::BDF2 || !stepControls.adjustTimeStep())
     {
         subSteps.clearNextStepLimit();
     }
+    // BDF2 at a restart: the level before the start time, the scheme's
+    // state and the last accepted sub-step's rates (the first iterate)
+    // from the time folder (pendularBdf2Levels, variableStepBdf2), so that
+    // the first step is the uninterrupted run's; without them (a time
+    // written by an older build) backward Euler, as any run's first. Each
+    // part's balances have their own BDF2 term C^N, from 0 at its start
+    // (tests/hearthCaseResumeCoupled)
     if (scheme == timeScheme::BDF2 && runTime.timeIndex() > 0)
     {
-        Info<< "BDF2: restarted at t = " << runTime.timeName()
-            << " s: its first step by backward Euler (the level before it"
-            << " is not written), the BDF2 term of its balances from 0"
-            << " there" << endl;
+        if (bdf2Levels.found(bdf2))
+        {
+            bdf2Levels.restore(bdf2, pRef, WOlder, AOlder, EOlder);
+            lastRateDeltaT = bdf2.deltaT1();
+            rateT =
+                (T.primitiveField() - bdf2Levels.T().primitiveField())
+               /lastRateDeltaT;
+            rateP =
+                (p.primitiveField() - bdf2Levels.p().primitiveField())
+               /lastRateDeltaT;
+            rateW =
+                (W.primitiveField() - bdf2Levels.W().primitiveField())
+               /lastRateDeltaT;
+            Info<< "BDF2: restarted at t = " << runTime.timeName()
+                << " s from the levels before it (" << bdf2.levels()
+                << ", the last sub-step " << bdf2.deltaT1() << " s: "
+                << runTime.timeName() << "/*.bdf2Old*, uniform/"
+                << variableStepBdf2::typeName << "): its first step by"
+                << (bdf2.order() == 2 ? " BDF2" : " backward Euler")
+                << ", the BDF2 term of its balances from 0 there" << endl;
+        }
+        else
+        {
+            Info<< "BDF2: restarted at t = " << runTime.timeName()
+                << " s: its first step by backward Euler (the level before"
+                << " it is not written: " << bdf2Levels.missing(bdf2).c_str()
+                << "), the BDF2 term of its balances from 0 there" << endl;
+        }
     }
 
     Info<< "\nStarting time loop\n" << endl;
@@ -143,6 +170,10 @@ int main(int argc, char *argv[])
 
         #include "solveStep.H"
 
+        if (runTime.writeTime() && scheme == timeScheme::BDF2)
+        {
+            bdf2Levels.store(bdf2, pRef, AOlder, EOlder);
+        }
         runTime.write();
 
         if (runTime.writeTime())
