@@ -70,6 +70,12 @@ Description
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
     be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
+    Restart (startFrom latestTime): the step controller's state
+    (uniform/subStepController) and BDF2's level before the last accepted
+    sub-step (pendularBdf2Levels: <time>/*.bdf2Old*, T.bdf2Older,
+    uniform/variableStepBdf2) are read back, so that the resumed run takes
+    the uninterrupted run's steps; a time written without them is resumed
+    with a first step by backward Euler (said in the log).
 
 \*---------------------------------------------------------------------------*/
 
@@ -119,44 +125,7 @@ int main(int argc, char *argv[])
     {
         subSteps.clearNextStepLimit();
     }
-    // BDF2 at a restart: the level before the start time, the scheme's
-    // state and the last accepted sub-step's rates (the first iterate)
-    // from the time folder (pendularBdf2Levels, variableStepBdf2), so that
-    // the first step is the uninterrupted run's; without them (a time
-    // written by an older build) backward Euler, as any run's first. Each
-    // part's balances have their own BDF2 term C^N, from 0 at its start
-    // (tests/hearthCaseResumeCoupled)
-    if (scheme == timeScheme::BDF2 && runTime.timeIndex() > 0)
-    {
-        if (bdf2Levels.found(bdf2))
-        {
-            bdf2Levels.restore(bdf2, pRef, WOlder, AOlder, EOlder);
-            lastRateDeltaT = bdf2.deltaT1();
-            rateT =
-                (T.primitiveField() - bdf2Levels.T().primitiveField())
-               /lastRateDeltaT;
-            rateP =
-                (p.primitiveField() - bdf2Levels.p().primitiveField())
-               /lastRateDeltaT;
-            rateW =
-                (W.primitiveField() - bdf2Levels.W().primitiveField())
-               /lastRateDeltaT;
-            Info<< "BDF2: restarted at t = " << runTime.timeName()
-                << " s from the levels before it (" << bdf2.levels()
-                << ", the last sub-step " << bdf2.deltaT1() << " s: "
-                << runTime.timeName() << "/*.bdf2Old*, uniform/"
-                << variableStepBdf2::typeName << "): its first step by"
-                << (bdf2.order() == 2 ? " BDF2" : " backward Euler")
-                << ", the BDF2 term of its balances from 0 there" << endl;
-        }
-        else
-        {
-            Info<< "BDF2: restarted at t = " << runTime.timeName()
-                << " s: its first step by backward Euler (the level before"
-                << " it is not written: " << bdf2Levels.missing(bdf2).c_str()
-                << "), the BDF2 term of its balances from 0 there" << endl;
-        }
-    }
+    #include "restartBdf2.H"
 
     Info<< "\nStarting time loop\n" << endl;
 
