@@ -4,6 +4,7 @@
 
 #include "pendularBdf2Levels.H"
 #include "pendularResidual.H"
+#include "checkedRead.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -30,27 +31,6 @@ Foam::volScalarField Foam::pendularBdf2Levels::field
 }
 
 
-bool Foam::pendularBdf2Levels::everywhere(volScalarField& fld)
-{
-    const bool present = fld.headerOk();
-    if
-    (
-        returnReduce(present, orOp<bool>())
-     != returnReduce(present, andOp<bool>())
-    )
-    {
-        FatalErrorInFunction
-            << "The BDF2 level " << fld.objectPath() << " is "
-            << (present ? "here" : "missing") << " but not on every"
-            << " processor: restore it from the run's copy, or remove"
-            << " every processor*/" << fld.time().timeName() << "/*.bdf2Old*"
-            << " to start by backward Euler"
-            << exit(FatalError);
-    }
-    return present;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::pendularBdf2Levels::pendularBdf2Levels(const fvMesh& mesh)
@@ -65,7 +45,15 @@ Foam::pendularBdf2Levels::pendularBdf2Levels(const fvMesh& mesh)
 {
     for (volScalarField* f : {&T1_, &p1_, &W1_, &A1_, &E1_, &T2_})
     {
-        if (!everywhere(*f))
+        if
+        (
+           !checkedRead::presentOnEveryRank
+            (
+                *f, "BDF2 level",
+                "remove every processor*/" + mesh.time().timeName()
+              + "/*.bdf2Old* to start by backward Euler"
+            )
+        )
         {
             absent_.append(f->name());
         }

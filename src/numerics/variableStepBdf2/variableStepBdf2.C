@@ -62,21 +62,12 @@ Foam::variableStepBdf2::variableStepBdf2
 
     // A restarted run: the state its last write saved (writeData), on
     // every rank or on none (the ranks would take different steps)
-    const bool present = headerOk();
-    if
+    const bool present = checkedRead::presentOnEveryRank
     (
-        returnReduce(present, orOp<bool>())
-     != returnReduce(present, andOp<bool>())
-    )
-    {
-        FatalErrorInFunction
-            << "The BDF2 state " << objectPath() << " is "
-            << (present ? "here" : "missing") << " but not on every"
-            << " processor: restore it from the run's copy, or remove"
-            << " every processor*/" << time().timeName() << "/uniform/"
-            << typeName << " to start by backward Euler"
-            << exit(FatalError);
-    }
+        *this, "BDF2 state",
+        "remove every processor*/" + time().timeName() + "/uniform/"
+      + typeName + " to start by backward Euler"
+    );
     if (present)
     {
         const dictionary dict(readStream(typeName));
