@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "checkedRead.H"
+#include "PstreamReduceOps.H"
 #include "OStringStream.H"
 #include "token.H"
 #include "HashTable.H"
@@ -956,6 +957,30 @@ Foam::dictionary Foam::checkedRead::readWithoutDuplicates(const fileName& file)
 
     dict.remove("FoamFile");
     return dict;
+}
+
+
+bool Foam::checkedRead::presentOnEveryRank
+(
+    regIOobject& io,
+    const string& what,
+    const string& remedy
+)
+{
+    const bool present = io.headerOk();
+    if
+    (
+        returnReduce(present, orOp<bool>())
+     != returnReduce(present, andOp<bool>())
+    )
+    {
+        FatalErrorInFunction
+            << "The " << what.c_str() << " " << io.objectPath() << " is "
+            << (present ? "here" : "missing") << " but not on every"
+            << " processor: restore it from the run's copy, or "
+            << remedy.c_str() << exit(FatalError);
+    }
+    return present;
 }
 
 

@@ -70,6 +70,12 @@ Description
     prints a warning (balanceMonitor); with strictBalance true (default
     false) it makes the exit status 1. T must
     be above 0 K (and the initial soil at or above 200 K: temperatureCheck).
+    Restart (startFrom latestTime): the step controller's state
+    (uniform/subStepController) and BDF2's level before the last accepted
+    sub-step (pendularBdf2Levels: <time>/*.bdf2Old*, T.bdf2Older,
+    uniform/variableStepBdf2) are read back, so that the resumed run takes
+    the uninterrupted run's steps; a time written without them is resumed
+    with a first step by backward Euler (said in the log).
 
 \*---------------------------------------------------------------------------*/
 
@@ -81,6 +87,7 @@ Description
 #include "subStepController.H"
 #include "OStringStream.H"
 #include "variableStepBdf2.H"
+#include "pendularBdf2Levels.H"
 #include "balanceMonitor.H"
 #include "temperatureCheck.H"
 #include "upwind.H"
@@ -112,24 +119,13 @@ int main(int argc, char *argv[])
     #include "createBalances.H"
     #include "createNewton.H"
 
-    // BDF2's history (the unknowns and amounts at the step before the
-    // start, the last steps' lengths) is not in the time folder: a
-    // restarted run takes its first step by backward Euler, as any run's
-    // first, and its balances' BDF2 term starts at 0 there
-    // (tests/hearthCaseResumeCoupled)
     // A restart's local error limit (uniform/subStepController) holds only
     // where this run makes local error estimates: BDF2 with adaptive steps
     if (scheme != timeScheme::BDF2 || !stepControls.adjustTimeStep())
     {
         subSteps.clearNextStepLimit();
     }
-    if (scheme == timeScheme::BDF2 && runTime.timeIndex() > 0)
-    {
-        Info<< "BDF2: restarted at t = " << runTime.timeName()
-            << " s: its first step by backward Euler (the level before it"
-            << " is not written), the BDF2 term of its balances from 0"
-            << " there" << endl;
-    }
+    #include "restartBdf2.H"
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -143,6 +139,10 @@ int main(int argc, char *argv[])
 
         #include "solveStep.H"
 
+        if (runTime.writeTime() && scheme == timeScheme::BDF2)
+        {
+            bdf2Levels.store(bdf2, pRef, AOlder, EOlder);
+        }
         runTime.write();
 
         if (runTime.writeTime())

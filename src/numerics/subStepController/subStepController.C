@@ -78,21 +78,12 @@ Foam::subStepController::subStepController
     // A restarted run: the state its last write saved (writeData), on
     // every rank or on none (a case copied in part: the ranks would take
     // different steps, then wait for each other at the next write)
-    const bool present = headerOk();
-    if
+    const bool present = checkedRead::presentOnEveryRank
     (
-        returnReduce(present, orOp<bool>())
-     != returnReduce(present, andOp<bool>())
-    )
-    {
-        FatalErrorInFunction
-            << "The sub-step state " << objectPath() << " is "
-            << (present ? "here" : "missing") << " but not on every"
-            << " processor: restore it from the run's copy, or remove"
-            << " every processor*/" << time().timeName() << "/uniform/"
-            << typeName << " to start from controlDict's deltaT"
-            << exit(FatalError);
-    }
+        *this, "sub-step state",
+        "remove every processor*/" + time().timeName() + "/uniform/"
+      + typeName + " to start from controlDict's deltaT"
+    );
     if (present)
     {
         const dictionary dict(readStream(typeName));

@@ -4,8 +4,16 @@
 
 #include "variableStepBdf2.H"
 #include "PstreamReduceOps.H"
+#include "Time.H"
+#include "checkedRead.H"
+#include "dimensionSets.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(variableStepBdf2, 0);
+}
 
 const Foam::scalar Foam::variableStepBdf2::maxStepRatio = 1 + Foam::sqrt(2.0);
 
@@ -14,11 +22,24 @@ const Foam::scalar Foam::variableStepBdf2::maxStepRatio = 1 + Foam::sqrt(2.0);
 
 Foam::variableStepBdf2::variableStepBdf2
 (
+    const Time& runTime,
     const label nBlock,
     const label component,
     const scalarField& totals
 )
 :
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        )
+    ),
     nBlock_(nBlock),
     component_(component),
     dt1_(0),
@@ -29,13 +50,64 @@ Foam::variableStepBdf2::variableStepBdf2
     x2_(),
     total_(totals),
     change_(totals.size(), Zero),
-    correction_(totals.size(), Zero)
+    correction_(totals.size(), Zero),
+    savedAccepted_(-1)
 {
     if (nBlock < 1 || component < 0 || component >= nBlock)
     {
         FatalErrorInFunction
             << "component " << component << " of " << nBlock
             << " unknowns per cell" << abort(FatalError);
+    }
+
+    // A restarted run: the state its last write saved (writeData), on
+    // every rank or on none (the ranks would take different steps)
+    const bool present = checkedRead::presentOnEveryRank
+    (
+        *this, "BDF2 state",
+        "remove every processor*/" + time().timeName() + "/uniform/"
+      + typeName + " to start by backward Euler"
+    );
+    if (present)
+    {
+        const dictionary dict(readStream(typeName));
+        close();
+        checkedRead::checkKeywords
+        (
+            dict, {"deltaT1", "deltaT2", "nAccepted", "nReduced", "change"}
+        );
+        savedAccepted_ = checkedRead::getLabel(dict, "nAccepted", 0, 2);
+        dt1_ =
+            checkedRead::get
+            (
+                dict, "deltaT1", dimTime,
+                savedAccepted_ > 0
+              ? checkedRead::positive() : checkedRead::nonNegative()
+            ).value();
+        dt2_ =
+            checkedRead::get
+            (
+                dict, "deltaT2", dimTime,
+                savedAccepted_ > 1
+              ? checkedRead::positive() : checkedRead::nonNegative()
+            ).value();
+        nReduced_ = checkedRead::getLabel(dict, "nReduced", 0, reducedSteps);
+        const scalarList change
+        (
+            checkedRead::getList
+            (
+                dict, "change", checkedRead::closed(-GREAT, GREAT),
+                "the balances' last changes, finite numbers"
+            )
+        );
+        if (change.size() != change_.size())
+        {
+            FatalIOErrorInFunction(dict)
+                << "change: " << change.size() << " values, "
+                << change_.size() << " expected (one per balance)"
+                << exit(FatalIOError);
+        }
+        change_ = change;
     }
 }
 
@@ -94,7 +166,7 @@ Foam::scalar Foam::variableStepBdf2::error
     {
         const scalar f01 = (x[i] - xn[i])/h;
         const scalar f12 = (xn[i] - x1_[i])/k1;
-        const scalar f23 = (x1_[i] - x2_[i])/k2;
+        const scalar f23 = (x1_[i] - x2_[i/nBlock_])/k2;
         const scalar f3 =
             ((f01 - f12)/(h + k1) - (f12 - f23)/(k1 + k2))/(h + k1 + k2);
         err = max(err, C*mag(f3));
@@ -138,12 +210,59 @@ void Foam::variableStepBdf2::accept
         total_[k] = totals[k];
     }
 
-    x2_.transfer(x1_);
+    // (of x^{n-1} the monitored unknown only: the error estimate's)
+    x2_.setSize(x1_.size()/nBlock_);
+    forAll(x2_, celli)
+    {
+        x2_[celli] = x1_[nBlock_*celli + component_];
+    }
     x1_ = xn;
     dt2_ = dt1_;
     dt1_ = dt;
     nAccepted_ = min(nAccepted_ + 1, 2);
     nReduced_ = max(nReduced_ - 1, 0);
+}
+
+
+void Foam::variableStepBdf2::restore
+(
+    const scalarField& x1,
+    const scalarField& x2
+)
+{
+    if (savedLevels() < 1 || x1.size() % nBlock_ != 0)
+    {
+        FatalErrorInFunction
+            << "No state read (" << savedAccepted_ << " levels) or "
+            << x1.size() << " values, not " << nBlock_ << " per cell"
+            << abort(FatalError);
+    }
+    if (savedAccepted_ > 1 && x2.size() != x1.size()/nBlock_)
+    {
+        FatalErrorInFunction
+            << x2.size() << " values of the monitored unknown at t_{n-2}"
+            << " for " << x1.size()/nBlock_ << " cells"
+            << abort(FatalError);
+    }
+    x1_ = x1;
+    x2_ = savedAccepted_ > 1 ? x2 : scalarField();
+    nAccepted_ = savedAccepted_;
+    savedAccepted_ = 0;
+}
+
+
+bool Foam::variableStepBdf2::writeData(Ostream& os) const
+{
+    // Every digit: the restarted run's coefficients are computed from these
+    const int precision =
+        os.precision(std::numeric_limits<scalar>::max_digits10);
+    os.writeEntry("deltaT1", dt1_);
+    os.writeEntry("deltaT2", dt2_);
+    os.writeEntry("nAccepted", nAccepted_);
+    os.writeEntry("nReduced", nReduced_);
+    os.writeEntry("change", change_);
+    os.precision(precision);
+    return os.good();
 }
 
 
