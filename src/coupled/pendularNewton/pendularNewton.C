@@ -1564,8 +1564,9 @@ Foam::pendularNewton::result Foam::pendularNewton::iterate
         if (iter == 0 || nSwitchedLast > 0)
         {
             // (after a phase switch the reference restarts: a cell the
-            // gas appears in has a gas capacity 1 - alpha = gasSeed, its
-            // scaled gas residual jumps by orders of magnitude)
+            // gas appears in has a gas capacity 1 - alpha of its seed, at
+            // most gasSeed, its scaled gas residual jumps by orders of
+            // magnitude)
             rFirst = rMax;
         }
         else if (rMax > divergenceFactor_*max(rFirst, scalar(1)))

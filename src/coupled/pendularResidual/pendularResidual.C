@@ -19,6 +19,14 @@
 #include "calculatedFvPatchFields.H"
 #include "unitConversion.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(pendularResidual, 0);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::pendularResidual::pendularResidual
@@ -474,6 +482,14 @@ Foam::label Foam::pendularResidual::switchPhases
             held[c] = S >= 1;
             if (S >= 1 + (wide ? medium_.storage()*hp*mag(pg) : 0))
             {
+                if (debug)
+                {
+                    Pout<< "    switch cell " << c << " -> liquidOnly: T "
+                        << T << " p_g " << pg << " S - 1 " << S - 1
+                        << " (band "
+                        << (wide ? medium_.storage()*hp*mag(pg) : 0) << ")"
+                        << endl;
+                }
                 xc[1] = pg - pc1 - pRef_;
                 xc[2] = medium_.dissolvedAir(max(pg - pw1, scalar(0)), T);
                 phases[c] = liquidOnly;
@@ -488,9 +504,12 @@ Foam::label Foam::pendularResidual::switchPhases
             held[c] = pn <= 0 || pBubble > pn;
             if (pn <= 0 || pBubble > (1 + (wide ? hp : 0))*pn)
             {
-                // The gas fraction that the gas at the bubble pressure
-                // implies, 1 - S(p_b - p_l), within [seedMin, gasSeed]
-                // (issue 14, see the header)
+                // The gas fraction that keeps the cell's stored air: the
+                // two-phase state at the cell's p_l with 1 - s of liquid
+                // holds the air of the liquid-only one (A increases with
+                // s: the gas's air and Henry's at p_l + p_c(1 - s));
+                // within [seedMin, gasSeed], gasSeed where p_l + p_c(1) <=
+                // 0 (issue 14, see the header)
                 const capillaryPressureModel& pcLaw =
                     medium_.liquidFlowPtr()->capillaryPressure();
                 const scalar Tl =
@@ -499,12 +518,49 @@ Foam::label Foam::pendularResidual::switchPhases
                         max(T, medium_.minimumTemperature()),
                         medium_.dryOutTemperature()
                     );
-                const scalar seedImplied =
-                    pn <= 0
-                  ? gasSeed
-                  : 1 - pcLaw.saturation(pBubble - (xc[1] + pRef_), Tl);
-                const scalar alpha =
-                    1 - min(gasSeed, max(min(seedMin_, gasSeed), seedImplied));
+                const scalar sLo = min(seedMin_, gasSeed);
+                scalar seed = gasSeed;
+                if (pn > 0)
+                {
+                    const pendularMedium::saturationState& sat =
+                        saturation(c, T);
+                    const scalar A0 =
+                        state(phi, alphaOld_[c], xc, sat, liquidOnly).A;
+                    auto airAt = [&](const scalar s)
+                    {
+                        const scalar y[3] =
+                        {
+                            T, xc[1] + pcLaw.pc(1 - s, Tl),
+                            medium_.waterContent(1 - s, T, phi)
+                        };
+                        return
+                            state(phi, alphaOld_[c], y, sat, bothPhases).A;
+                    };
+                    if (airAt(sLo) >= A0)
+                    {
+                        seed = sLo;
+                    }
+                    else if (airAt(gasSeed) > A0)
+                    {
+                        // Bisection in ln s to 1e-6 of s
+                        scalar a = sLo, b = gasSeed;
+                        while (b > a*(1 + 1e-6))
+                        {
+                            const scalar m = sqrt(a*b);
+                            (airAt(m) < A0 ? a : b) = m;
+                        }
+                        seed = sqrt(a*b);
+                    }
+                }
+                const scalar alpha = 1 - seed;
+                if (debug)
+                {
+                    Pout<< "    switch cell " << c << " -> bothPhases: T "
+                        << T << " p_l " << xc[1] + pRef_ << " X " << xc[2]
+                        << " p_b/(p_l + p_c1) - 1 " << pBubble/pn - 1
+                        << " (band " << (wide ? hp : 0) << ") seed "
+                        << 1 - alpha << endl;
+                }
                 xc[2] = medium_.waterContent(alpha, T, phi);
                 xc[1] = xc[1] + pcLaw.pc(alpha, Tl);
                 phases[c] = bothPhases;
