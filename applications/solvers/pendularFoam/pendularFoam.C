@@ -24,7 +24,8 @@ Description
     Unknowns: T, p_g and the water content W; the liquid fraction alpha_l,
     the vapour pressure p_w (Kelvin-Laplace) and the air pressure
     p_a = p_g - p_w follow in each cell. Each step is implicit (backward
-    Euler); the three equations are solved in turn for corrections with
+    Euler, or BDF2: the time scheme's default, pendularEngineSetup); with
+    engine segregated the three equations are solved in turn for corrections with
     approximate Jacobians (total gas mass for p_g, the water at fixed p_g
     for W, the energy at fixed p_g and W for T) and iterated until every
     correction is below its tolerance, so that the discrete conservation
