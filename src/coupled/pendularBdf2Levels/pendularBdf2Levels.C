@@ -116,7 +116,13 @@ void Foam::pendularBdf2Levels::restore
             T1_.primitiveField(), p1_.primitiveField(), W1_.primitiveField(),
             pRef
         ),
-        bdf2.savedLevels() > 1 ? T2_.primitiveField() : scalarField()
+        bdf2.savedLevels() > 1 ? T2_.primitiveField() : scalarField(),
+        scalarField
+        ({
+            gSum(W1_.mesh().V()*W1_.primitiveField()),
+            gSum(W1_.mesh().V()*A1_.primitiveField()),
+            gSum(W1_.mesh().V()*E1_.primitiveField())
+        })
     );
     WOld = W1_.primitiveField();
     AOld = A1_.primitiveField();

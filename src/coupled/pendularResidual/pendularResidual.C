@@ -557,7 +557,8 @@ Foam::label Foam::pendularResidual::switchPhases
                 {
                     Pout<< "    switch cell " << c << " -> bothPhases: T "
                         << T << " p_l " << xc[1] + pRef_ << " X " << xc[2]
-                        << " p_b/(p_l + p_c1) - 1 " << pBubble/pn - 1
+                        << " p_b/(p_l + p_c1) - 1 "
+                        << (pn > 0 ? pBubble/pn - 1 : GREAT)
                         << " (band " << (wide ? hp : 0) << ") seed "
                         << 1 - alpha << endl;
                 }
